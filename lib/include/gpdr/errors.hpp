@@ -1,0 +1,62 @@
+#pragma once
+// Error types thrown by libgpdr.  The library never prints and never exits:
+// it throws one of these, and apps/gpdr turns it into "gpdr: <what()>" on
+// stderr and exit status 1.
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+
+namespace gpdr {
+
+// Base of every error the library reports on purpose.
+class Error : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// A malformed or unreadable input file.  what() is "FILE:LINE: reason", or
+// "FILE: reason" when the problem is not on one line (line == 0).
+class InputError : public Error {
+public:
+    InputError(std::string file, std::size_t line, std::string reason)
+        : Error(line == 0 ? file + ": " + reason
+                          : file + ":" + std::to_string(line) + ": " + reason),
+          file_(std::move(file)), line_(line), reason_(std::move(reason)) {}
+
+    const std::string& file() const noexcept { return file_; }
+    std::size_t line() const noexcept { return line_; }
+    const std::string& reason() const noexcept { return reason_; }
+
+private:
+    std::string file_;
+    std::size_t line_;
+    std::string reason_;
+};
+
+// A command line (switch string) that cannot be understood.
+class UsageError : public Error {
+public:
+    using Error::Error;
+};
+
+// A switch or feature that a later version delivers.  Never ignored silently.
+class NotImplemented : public Error {
+public:
+    using Error::Error;
+};
+
+// An output file that cannot be written (permissions, full disk, ...).
+class OutputError : public Error {
+public:
+    using Error::Error;
+};
+
+// Invalid input geometry that is not tied to one line of a file (all points
+// collinear, fewer than three vertices, ...).
+class GeometryError : public Error {
+public:
+    using Error::Error;
+};
+
+}  // namespace gpdr

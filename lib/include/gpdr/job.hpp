@@ -1,0 +1,41 @@
+#pragma once
+// One run of gpdr, as the command line describes it: read the input files,
+// triangulate, refine, write the output files.  This is what apps/gpdr calls
+// once it has turned argv into Options.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <gpdr/diagnostics.hpp>
+#include <gpdr/options.hpp>
+
+namespace gpdr {
+
+struct JobResult {
+    std::vector<std::string> files_written;  // in the order they were renamed into place
+
+    std::uint64_t input_vertices = 0;
+    std::uint64_t vertices = 0;   // in the output mesh
+    std::uint64_t triangles = 0;
+    std::uint64_t segments = 0;   // subsegments in the output mesh
+    std::uint64_t edges = 0;
+    std::uint64_t hull_edges = 0;
+
+    // Seconds spent in each stage.
+    double read_seconds = 0, triangulate_seconds = 0, refine_seconds = 0, write_seconds = 0;
+
+    // -C: what the invariant checker found (empty when it found nothing).
+    bool checked = false;
+    std::vector<std::string> check_problems;
+
+    // -V: human-readable statistics lines prepared by the library (no printing
+    // happens in the library; apps/gpdr prints these).
+    std::vector<std::string> statistics;
+};
+
+// Runs the whole job.  Throws gpdr::Error subclasses on bad input or output;
+// warnings go to `warn` (the caller silences them for -Q).
+JobResult run_job(const Options& options, const WarningSink& warn);
+
+}  // namespace gpdr

@@ -1,0 +1,46 @@
+# Shared by the benchmark scripts (source it).  Runs gpdr and, when the
+# environment names one, a Triangle binary (TRIANGLE=/path/to/triangle) on the
+# same input, and prints one Markdown table row per run: stage times taken
+# from each program's -V "... milliseconds" lines, wall time and peak memory
+# from /usr/bin/time.  Figures are meant to be compared as ratios within one
+# run of a script: these machines are small and noisy.
+
+GPDR=${GPDR:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/build/gpdr}
+BENCH_DIR=${BENCH_DIR:-/tmp/gpdr-bench}
+mkdir -p "$BENCH_DIR"
+
+if [ ! -x /usr/bin/time ]; then
+  echo "bench: installing the 'time' package for peak-memory figures" >&2
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq time >/dev/null
+fi
+
+# random_points N FILE: N uniform random points in the unit square (fixed seed).
+random_points() {
+  [ -f "$2" ] && return
+  awk -v n="$1" 'BEGIN { srand(12345); print n, 2, 0, 0;
+    for (i = 1; i <= n; i++) printf "%d %.17g %.17g\n", i, rand(), rand() }' >"$2"
+}
+
+bench_header() {
+  echo "| input | program | switches | vertices | triangles | read+tri s | refine s | write s | total s | peak MiB |"
+  echo "|---|---|---|---:|---:|---:|---:|---:|---:|---:|"
+}
+
+# ms LOG NAME: the number on the line "NAME milliseconds: N" (0 if absent).
+ms() { awk -v k="$2 milliseconds:" 'index($0, k) { v = $NF } END { printf "%.3f", (v == "" ? 0 : v) / 1000 }' "$1"; }
+count() { awk -v k="$2" 'index($0, k) { v = $NF } END { print (v == "" ? "?" : v) }' "$1"; }
+
+# bench_run LABEL PROGRAM SWITCHES INPUT: runs in a scratch copy of the input's folder.
+bench_run() {
+  local label=$1 program=$2 switches=$3 input=$4
+  local log="$BENCH_DIR/run.log" tlog="$BENCH_DIR/time.log"
+  ( cd "$(dirname "$input")" && /usr/bin/time -f "%e %M" -o "$tlog" "$program" "-V$switches" "$(basename "$input")" >"$log" 2>&1 ) || {
+    echo "| $(basename "$input") | $label | -$switches | failed: $(tail -1 "$log") |"; return; }
+  local wall peak
+  read -r wall peak <"$tlog"
+  local tri_ms dl seg hole
+  dl=$(ms "$log" "Delaunay"); seg=$(ms "$log" "Segment"); hole=$(ms "$log" "Hole"); tri_ms=$(ms "$log" "Read")
+  local pre
+  pre=$(awk -v a="$dl" -v b="$seg" -v c="$hole" -v d="$tri_ms" 'BEGIN { printf "%.3f", a + b + c + d }')
+  echo "| $(basename "$input") | $label | -$switches | $(count "$log" "Mesh vertices:") | $(count "$log" "Mesh triangles:") | $pre | $(ms "$log" "Quality") | $(ms "$log" "Output") | $wall | $((peak / 1024)) |"
+}

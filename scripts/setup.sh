@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs what gpdr needs on a Debian machine (only what is missing), then
+# configures and builds it in ./build.  Idempotent: a second run with nothing
+# changed installs nothing and rebuilds nothing.
+#
+#   scripts/setup.sh [extra cmake -D options]
+#
+# Environment: BUILD_DIR (default build), JOBS (default: all cores).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(cmake make g++ libcli11-dev libfmt-dev catch2 libgmp-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo apt-get update -qq
+  $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+build_dir=${BUILD_DIR:-build}
+jobs=${JOBS:-$(nproc)}
+if [ ! -f "$build_dir/CMakeCache.txt" ]; then
+  cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DGPDR_WERROR=ON "$@" >/dev/null
+elif [ $# -gt 0 ]; then
+  cmake "$build_dir" "$@" >/dev/null
+fi
+cmake --build "$build_dir" -j "$jobs"

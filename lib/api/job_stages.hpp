@@ -1,0 +1,47 @@
+#pragma once
+// The stages of one gpdr run (job.cpp strings them together): refuse what is
+// not implemented yet, turn the finished mesh into arrays, write the files.
+
+#include <string>
+#include <vector>
+
+#include <gpdr/file_names.hpp>
+#include <gpdr/files.hpp>
+#include <gpdr/options.hpp>
+
+#include "api/mesh_arrays.hpp"
+#include "mesh/mesh.hpp"
+
+namespace gpdr::api {
+
+// Throws NotImplemented, naming the switch, for every feature a later version
+// delivers, so that no switch is ever silently ignored.
+void refuse_unimplemented(const Options& options);
+
+// The finished mesh as arrays.  `nodes` are the input vertices (ids 0..n-1 of
+// the mesh; attributes and markers kept); vertices the mesh added after them
+// are appended.  Vertex markers follow Triangle: a non-zero input marker is
+// kept, otherwise a vertex on a subsegment takes its marker, otherwise a
+// vertex on the boundary gets 1 and any other 0.
+MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes);
+
+// The marker of mesh edge {a, b} (Triangle's rules): a subsegment's own
+// marker if non-zero, else 1 on the boundary, else 0.
+EdgeMarker edge_markers(const mesh::Mesh& mesh);
+
+// Everything about the output a run needs besides the mesh.
+struct OutputRequest {
+    const Options* options = nullptr;
+    const FileNames* names = nullptr;
+    int base = 1;                 // numbering base of the run
+    const PolyFile* poly = nullptr;  // the input PSLG (holes, regions), if any
+    bool write_hull_poly = false;    // -c on a point set: .poly of the hull
+};
+
+// Writes every file the switches ask for, all or none (an output
+// transaction), and returns their names in the order written.  -j and -o2
+// change `arrays`.
+std::vector<std::string> write_outputs(const OutputRequest& request, const mesh::Mesh& mesh,
+                                       MeshArrays& arrays);
+
+}  // namespace gpdr::api

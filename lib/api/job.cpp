@@ -3,6 +3,7 @@
 // the one before and hands its result on; none reaches back.
 
 #include <chrono>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -62,35 +63,73 @@ void warn_duplicates(const triangulate::DelaunayReport& report, const std::strin
 
 std::string ms(double seconds) { return fmt::format("{:.0f}", seconds * 1000); }
 
+// Everything the input files say, read and validated before anything else
+// happens, so that a malformed file is reported by file and line whatever
+// the switches ask for.
+struct Input {
+    io::ReadResult<NodeSet> nodes;
+    std::string node_file;             // where the vertices came from
+    std::optional<PolyFile> poly;      // -p
+    std::optional<EleSet> triangles;   // -r
+    std::optional<AreaSet> areas;      // -r with bare -a
+};
+
+Input read_input(const Options& options, const FileNames& names, const WarningSink& warn) {
+    const int default_base = options.zero_based ? 0 : 1;
+    Input in;
+    if (options.poly && !options.refine) {
+        auto poly = io::read_poly(names.in_poly, warn, default_base);
+        in.nodes.base = poly.base;
+        in.nodes.data = std::move(poly.data.nodes);
+        in.node_file = poly.data.nodes_from_node_file ? names.in_node : names.in_poly;
+        poly.data.nodes = {};
+        in.poly = std::move(poly.data);
+        return in;
+    }
+    in.nodes = io::read_node(names.in_node, warn, default_base);
+    in.node_file = names.in_node;
+    if (options.refine) {
+        const int base = in.nodes.base;
+        auto ele = io::read_ele(names.in_ele, base, in.nodes.data.size(), warn);
+        if (options.poly) {
+            auto poly = io::read_poly(names.in_poly, warn, default_base);
+            poly.data.nodes = {};
+            in.poly = std::move(poly.data);
+        }
+        if (options.regional_area) in.areas = io::read_area(names.in_area, base, ele.data.size(), warn).data;
+        in.triangles = std::move(ele.data);
+    }
+    return in;
+}
+
 }  // namespace
 
 JobResult run_job(const Options& given, const WarningSink& warn) {
     Options options = given;
     apply_input_name(options);
-    api::refuse_unimplemented(options);
     const FileNames names = file_names(options);
     JobResult result;
     Stopwatch clock;
 
     // Read.
-    const int default_base = options.zero_based ? 0 : 1;
-    auto input = io::read_node(names.in_node, warn, default_base);
-    result.input_vertices = input.data.size();
+    Input input = read_input(options, names, warn);
+    api::refuse_unimplemented(options);
+    result.input_vertices = input.nodes.data.size();
     result.read_seconds = clock.lap();
 
     // Triangulate.
-    std::vector<geometry::Point> points(input.data.size());
-    for (std::size_t i = 0; i < points.size(); ++i) points[i] = {input.data.xy[2 * i], input.data.xy[2 * i + 1]};
+    std::vector<geometry::Point> points(input.nodes.data.size());
+    for (std::size_t i = 0; i < points.size(); ++i) points[i] = {input.nodes.data.xy[2 * i], input.nodes.data.xy[2 * i + 1]};
     triangulate::DelaunayReport report;
     mesh::Mesh mesh = [&] {
         try {
             return triangulate::delaunay(points, report);
         } catch (const GeometryError& e) {
-            throw InputError(names.in_node, 0, e.what());
+            throw InputError(input.node_file, 0, e.what());
         }
     }();
     points = {};
-    warn_duplicates(report, names.in_node, input.base, warn);
+    warn_duplicates(report, input.node_file, input.nodes.base, warn);
     if (options.convex_hull) make_hull_segments(mesh);
     result.triangulate_seconds = clock.lap();
 
@@ -100,7 +139,7 @@ JobResult run_job(const Options& given, const WarningSink& warn) {
     }
 
     // Write.
-    api::MeshArrays arrays = api::mesh_to_arrays(mesh, std::move(input.data));
+    api::MeshArrays arrays = api::mesh_to_arrays(mesh, std::move(input.nodes.data));
     const api::EdgeCounts edges = api::count_edges(arrays);
     result.vertices = arrays.nodes.size() - report.duplicates.size();
     result.triangles = arrays.triangles.size();
@@ -114,7 +153,7 @@ JobResult run_job(const Options& given, const WarningSink& warn) {
     api::OutputRequest request;
     request.options = &options;
     request.names = &names;
-    request.base = input.base;
+    request.base = input.nodes.base;
     request.write_hull_poly = options.convex_hull;
     result.files_written = api::write_outputs(request, mesh, arrays);
     result.write_seconds = clock.lap();

@@ -40,8 +40,8 @@ struct Region {
 };
 
 struct PolyFile {
-    NodeSet nodes;                   // empty when taken from the .node file
-    bool nodes_from_node_file = false;
+    NodeSet nodes;                   // read from the .node file when the .poly's count is 0
+    bool nodes_from_node_file = false;  // ... as it was then (output: write the count 0)
     SegmentSet segments;
     std::vector<double> holes;       // x0, y0, x1, y1, ...
     std::vector<Region> regions;

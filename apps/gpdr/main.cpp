@@ -1,8 +1,62 @@
-// Placeholder entry point while the command line is written (see issue 2).
+// gpdr's entry point: argv -> Options -> gpdr::run_job() -> messages and an
+// exit status.  No geometry here; every error the library reports arrives as
+// an exception and leaves as "gpdr: <message>" on stderr with exit status 1.
+//
+// This file is also what a user links with libgpdr.a and their own
+// triunsuitable() object to build a custom gpdr (see apps/CMakeLists.txt).
 #include <cstdio>
-#include <cstring>
-int main(int argc, char** argv) {
-    if (argc > 1 && std::strcmp(argv[1], "-h") == 0) { std::puts("gpdr -p ..."); return 0; }
-    std::fputs("gpdr: not implemented yet\n", stderr);
+#include <exception>
+#include <new>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include <gpdr/errors.hpp>
+#include <gpdr/job.hpp>
+
+#include "command_line.hpp"
+#include "help_text.hpp"
+#include "report.hpp"
+
+namespace {
+
+int run(int argc, const char* const* argv) {
+    using gpdr::app::CommandLine;
+    const CommandLine line = gpdr::app::parse_command_line(argc, argv);
+    switch (line.action) {
+        case CommandLine::Action::usage: fmt::print("{}", gpdr::app::usage_text()); return 0;
+        case CommandLine::Action::help: fmt::print("{}", gpdr::app::help_text()); return 0;
+        case CommandLine::Action::version: fmt::print("{}", gpdr::app::version_text()); return 0;
+        case CommandLine::Action::run: break;
+    }
+    const gpdr::JobResult result =
+        gpdr::run_job(line.options, gpdr::app::printing_sink(line.options, stderr));
+    return gpdr::app::report_result(line.options, result, stdout, stderr);
+}
+
+// Prints "gpdr: <what><note>" on stderr; two parts so that reporting an
+// internal error needs no allocation.
+int fail(std::string_view what, std::string_view note = {}) {
+    std::fflush(stdout);
+    fmt::print(stderr, "gpdr: {}{}\n", what, note);
     return 1;
+}
+
+constexpr std::string_view please_report =
+    " (an internal error: please report it, with the input and the command line)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const gpdr::Error& e) {
+        return fail(e.what());
+    } catch (const std::bad_alloc&) {
+        return fail("out of memory");
+    } catch (const std::exception& e) {
+        return fail(e.what(), please_report);
+    } catch (...) {
+        return fail("unknown exception", please_report);
+    }
 }

@@ -1,0 +1,110 @@
+// gpdr's usage, help and version texts.  The switch list follows the order
+// of Triangle 1.6's help so that its users find each letter where they expect
+// it; the wording is gpdr's own.  man/gpdr.1 says the same at more length:
+// keep the two in step.
+#include "help_text.hpp"
+
+#include <fmt/format.h>
+
+#ifndef GPDR_VERSION
+#define GPDR_VERSION "unknown"
+#endif
+
+namespace gpdr::app {
+
+std::string version_text() {
+    return fmt::format("gpdr {}\n", GPDR_VERSION);
+}
+
+std::string usage_text() {
+    return "Usage: gpdr [-prq__a__uAcDjevngBPNEIOXzo_YS__iFlsCQVh] [--threads N]\n"
+           "            [--granularity N] [--placement NAME] [--unsuitable LIB.so] input_file\n"
+           "\n"
+           "Meshes input_file (.node, or .poly with -p; -r refines a .node/.ele mesh) and\n"
+           "writes the result as input.1.node, input.1.ele, ...  Numbers follow their\n"
+           "switch with no space: -pq30a0.1.\n"
+           "\n"
+           "  gpdr -pq box.poly     quality mesh of a PSLG, no angle below 20 degrees\n"
+           "  gpdr -h               every switch, the files, and the exit status\n";
+}
+
+std::string help_text() {
+    return version_text() +
+           "A parallel two-dimensional quality mesh generator and Delaunay triangulator,\n"
+           "and a drop-in replacement for Triangle 1.6: the same switches, the same files.\n"
+           "\n"
+           "Usage: gpdr [-prq__a__uAcDjevngBPNEIOXzo_YS__iFlsCQVh] [long options] input_file\n"
+           "\n"
+           "Letters may be grouped (-pq30a0.1 is -p -q30 -a0.1) and are read left to\n"
+           "right; a number follows its letter with no space.  An unknown letter is an\n"
+           "error.  The input is a .node file, a .poly file with -p, or with -r a mesh\n"
+           "given by its .node and .ele files (and .poly, .area when -p, -a ask for them).\n"
+           "The extension may be left off; .poly implies -p, .ele implies -r, and .area\n"
+           "implies -r and -a.\n"
+           "\n"
+           "Switches:\n"
+           "  -p        Read a planar straight line graph (.poly): vertices, segments,\n"
+           "            holes, regions.  Triangulate it keeping every segment; without -c,\n"
+           "            remove the triangles outside the segments and in holes.\n"
+           "  -r        Refine the mesh in input.node and input.ele (a previous output).\n"
+           "  -q[ANGLE] Quality mesh: no angle below ANGLE degrees (default 20; at most\n"
+           "            about 33 is practical, and below 60 is required).  Also keeps the\n"
+           "            largest angle below 180 - 2 ANGLE.\n"
+           "  -a[AREA]  With a number: no triangle larger than AREA (above zero; 1e-5 style\n"
+           "            exponents allowed).  Bare: area bounds per region from the .poly,\n"
+           "            or per triangle from input.area with -r.  Both may be given: -aa0.5.\n"
+           "  -u        Refine triangles that the user's triunsuitable() rejects.\n"
+           "  -A        Give each triangle the attribute of the region holding it (-p).\n"
+           "  -c        Enclose the convex hull with segments and mesh all of it.\n"
+           "  -D        Conforming Delaunay: make every triangle Delaunay, not only\n"
+           "            constrained Delaunay.\n"
+           "  -j        Jettison vertices that no triangle uses from the output .node.\n"
+           "  -e        Also write the edges (.edge).\n"
+           "  -v        Also write the Voronoi diagram (.v.node and .v.edge).\n"
+           "  -n        Also write each triangle's neighbours (.neigh).\n"
+           "  -g        Also write the mesh as an Object File Format file (.off).\n"
+           "  -B        Write no boundary markers.\n"
+           "  -P        Write no .poly file.\n"
+           "  -N        Write no .node file.\n"
+           "  -E        Write no .ele file.\n"
+           "  -I        No iteration number in output names (box.node, not box.1.node);\n"
+           "            not with -r, and no .poly is written.\n"
+           "  -O        Ignore the holes of the .poly file.\n"
+           "  -X        Accepted for Triangle's sake; gpdr's arithmetic is always exact.\n"
+           "  -z        Number items from zero (the input's first index still decides).\n"
+           "  -o2       Write six-node (second-order) triangles.\n"
+           "  -Y        Add no vertices on the boundary segments.  -YY: on any segment.\n"
+           "  -S[N]     Add at most N Steiner vertices (bare: none).\n"
+           "  -i        Triangulate by incremental insertion (an algorithm choice).\n"
+           "  -F        Triangulate by Fortune's sweepline (an algorithm choice).\n"
+           "  -l        Divide and conquer with vertical cuts only (an algorithm choice).\n"
+           "  -s        Insert segments by splitting them, not by flipping.\n"
+           "  -C        Check the final mesh (topology, orientation, Delaunay property).\n"
+           "  -Q        Quiet: print no \"Wrote\" lines and no warnings.\n"
+           "  -V        Verbose: print statistics; repeat (-VV, -VVV) for more.\n"
+           "  -h        Print this help and exit.\n"
+           "\n"
+           "gpdr's own (a digit right after j, g or P; bare they mean the above):\n"
+           "  -jN, --threads N       Use N worker threads (0: one per hardware thread).\n"
+           "  -gN, --granularity N   Quadtree granularity of the parallel refinement\n"
+           "                         (0: the built-in default).\n"
+           "  -PN, --placement NAME  Where Steiner points go: 0 circumcentre,\n"
+           "                         1 off-centre (the default, as Triangle),\n"
+           "                         2 optimisation (the GPDR paper's point).\n"
+           "  --unsuitable LIB.so    Load triunsuitable() from a shared object (implies -u).\n"
+           "  --help                 The same as -h.\n"
+           "  --version              Print the version and exit.\n"
+           "\n"
+           "Files (input box.poly; outputs box.1.*, or box.2.* when refining box.1):\n"
+           "  .node .poly .ele .area     inputs, the same formats as Triangle's\n"
+           "  .node .ele .poly           outputs (unless -N, -E, -P)\n"
+           "  .edge .neigh .v.node .v.edge .off   outputs with -e, -n, -v, -g\n"
+           "\n"
+           "Messages: \"Wrote FILE\" lines and statistics on standard output; warnings\n"
+           "and errors as \"gpdr: ...\" on standard error.  Exit status: 0 on success (and\n"
+           "for -h and for no input), 1 on any error or a failed -C check.\n"
+           "See gpdr(1) for the file formats and the few deliberate differences from\n"
+           "Triangle.\n";
+}
+
+}  // namespace gpdr::app

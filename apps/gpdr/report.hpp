@@ -1,0 +1,27 @@
+#pragma once
+// What gpdr prints about a run: warnings as they come (stderr), then the
+// files written, the -C verdict and the -V statistics (stdout).  -Q silences
+// everything except errors and check failures.
+
+#include <cstdio>
+#include <string>
+
+#include <gpdr/diagnostics.hpp>
+#include <gpdr/job.hpp>
+#include <gpdr/options.hpp>
+
+namespace gpdr::app {
+
+// "gpdr: FILE:LINE: warning: MESSAGE", "gpdr: FILE: warning: MESSAGE" or
+// "gpdr: warning: MESSAGE", without the newline.
+std::string format_warning(const Warning& warning);
+
+// A sink printing each warning on `err` at once, or nothing with -Q.
+WarningSink printing_sink(const Options& options, std::FILE* err);
+
+// Prints the outcome of a finished job and returns the exit status: 1 when a
+// -C check found problems, otherwise 0.
+int report_result(const Options& options, const JobResult& result, std::FILE* out,
+                  std::FILE* err);
+
+}  // namespace gpdr::app

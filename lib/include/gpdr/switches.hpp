@@ -1,0 +1,31 @@
+#pragma once
+// Triangle's switch letters: one command-line argument such as "-pq30a0.1"
+// read into gpdr::Options, left to right, as Triangle 1.6's parsecommandline()
+// reads it, with the deviations gpdr documents (README, man page): an
+// unknown letter is an error, q/a numbers may carry an exponent, and -jN,
+// -gN, -PN are gpdr's own numbered switches.
+
+#include <string_view>
+
+#include <gpdr/options.hpp>
+
+namespace gpdr {
+
+// Applies one cluster of switch letters, with or without its leading '-', to
+// `options`.  Several clusters apply in turn ("-p" then "-q30" equals
+// "-pq30"); a later value replaces an earlier one.  Stops at 'h' (also 'H'
+// or '?') after setting options.help, as Triangle prints its help at once.
+// Throws UsageError naming the cluster for an unknown letter, a malformed
+// number, or a value out of range (-q outside [0, 60), -a not above zero,
+// -P other than 0, 1, 2).
+void parse_switches(std::string_view cluster, Options& options);
+
+// A placement strategy by name ("circumcentre", "off-centre",
+// "optimisation", American spellings too) or number ("0", "1", "2"), as
+// --placement takes it.  Throws UsageError for anything else.
+Placement parse_placement(std::string_view name);
+
+// The placement's name as parse_placement() reads it and the help prints it.
+std::string_view placement_name(Placement placement);
+
+}  // namespace gpdr

@@ -1,0 +1,89 @@
+#pragma once
+// Bowyer–Watson insertion of one point (Bowyer 1981, Watson 1981), the step
+// every later stage repeats: triangulation of points, the CDT's vertices,
+// and every Steiner point of refinement.
+//
+//   1. Locate p (locate.hpp), walking from the hint.
+//   2. Refuse: p equal to a vertex (duplicate), p in the interior of a
+//      subsegment (on_subsegment: the caller splits the subsegment instead),
+//      p beyond a hull edge that has no neighbour (outside).  Nothing changes.
+//   3. Grow the cavity from the triangle containing p: a neighbour joins when
+//      p lies strictly inside its circumcircle (exact incircle).  The search
+//      never crosses a subsegment, so in a constrained Delaunay mesh the
+//      cavity is the set of triangles visible from p whose circumcircles hold
+//      p, and the result is again constrained Delaunay.  With p on an edge,
+//      both triangles join (p is inside both circumcircles).
+//   4. Kill the cavity, walk its boundary in order and fan it from p.  A
+//      hull edge that p lies on (possible when the mesh has no ghosts) is
+//      left out of the fan, leaving p on the hull.
+//
+// Ghost triangles (a hull edge plus ghost_vertex, used while a point set is
+// triangulated) take part as triangles whose "circumcircle" is the open
+// half-plane beyond their edge plus the open edge itself; so points outside
+// the hull are inserted too, and the hull grows.
+//
+// Memory touched (for the parallel layer's buffer zones): the triangles
+// visited by the walk (read), the cavity (rewritten), and the triangles
+// just outside it (their incircle is tested and their link across the
+// cavity boundary rewritten).  The scratch mark bit is set only on cavity
+// triangles and cleared before returning.
+//
+// The caller owns the InsertBuffer and reuses it, so an insertion allocates
+// nothing once the buffer has grown to the largest cavity seen.
+
+#include <cstdint>
+#include <vector>
+
+#include "mesh/locate.hpp"
+#include "mesh/pool.hpp"
+
+namespace gpdr::mesh {
+
+enum class InsertStatus : std::uint8_t { inserted, duplicate, on_subsegment, outside };
+
+struct InsertResult {
+    InsertStatus status = InsertStatus::inserted;
+    // inserted: the new vertex; duplicate: the vertex already at p.
+    VertexId vertex = no_vertex;
+    // on_subsegment: the subsegment edge containing p; outside: the hull edge
+    // p lies beyond.  Otherwise none.
+    EdgeRef edge;
+};
+
+struct InsertBuffer {
+    // After an insertion: the new triangles, each with the new vertex at
+    // corner 2 and its cavity-boundary edge as edge 2, in counter-clockwise
+    // order around the vertex ...
+    std::vector<TriangleId> created;
+    // ... and the triangles that died.  Their slots may already be reused in
+    // `created`, under a new generation.
+    std::vector<TriangleId> killed;
+    // State of the walk's random generator (per thread, reproducible).
+    std::uint32_t random_state = 0x2545F491u;
+
+    // Scratch: the cavity boundary, counter-clockwise around p.
+    struct BoundaryEdge {
+        VertexId from, to;
+        EdgeRef outer;  // the triangle edge outside the cavity (none on the hull)
+        bool subsegment;
+    };
+    std::vector<BoundaryEdge> boundary;
+};
+
+// Inserts vertex v (already in the mesh store) at its point.
+InsertResult insert_vertex(Pool& pool, VertexId v, TriangleId hint, InsertBuffer& buffer);
+
+// Inserts a new vertex at p; the vertex is created (from the pool) only when
+// the insertion happens.
+InsertResult insert_point(Pool& pool, const Point& p, VertexKind kind, TriangleId hint,
+                          InsertBuffer& buffer);
+
+// Steps 2–4 with the location already known (`where` from locate(p)).
+// Vertex v must lie at p.
+InsertResult insert_located(Pool& pool, VertexId v, const LocateResult& where, InsertBuffer& buffer);
+
+// Whether p lies strictly inside the circumcircle of live triangle t (for a
+// ghost triangle: strictly beyond its edge, or inside the open edge).
+bool in_circumcircle(const Mesh& mesh, const Triangle& t, const Point& p);
+
+}  // namespace gpdr::mesh

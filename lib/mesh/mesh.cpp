@@ -1,0 +1,110 @@
+// Mesh: the chunked stores' bookkeeping (claiming vertex ranges and triangle
+// chunks, taking back what finished pools did not use).
+
+#include "mesh/mesh.hpp"
+
+#include <string>
+
+#include <gpdr/errors.hpp>
+
+namespace gpdr::mesh {
+
+Mesh::Mesh() : spare_mutex_(std::make_unique<std::mutex>()) {}
+
+Mesh::~Mesh() = default;
+
+Mesh::Mesh(Mesh&& other) noexcept
+    : triangles_(std::move(other.triangles_)),
+      points_(std::move(other.points_)),
+      kinds_(std::move(other.kinds_)),
+      triangle_chunks_(other.triangle_chunks_.load()),
+      vertex_end_(other.vertex_end_.load()),
+      subsegments_(std::move(other.subsegments_)),
+      spare_mutex_(std::move(other.spare_mutex_)),
+      spares_(std::move(other.spares_)) {
+    other.triangle_chunks_ = 0;
+    other.vertex_end_ = 0;
+}
+
+Mesh& Mesh::operator=(Mesh&& other) noexcept {
+    if (this != &other) {
+        triangles_ = std::move(other.triangles_);
+        points_ = std::move(other.points_);
+        kinds_ = std::move(other.kinds_);
+        triangle_chunks_ = other.triangle_chunks_.load();
+        vertex_end_ = other.vertex_end_.load();
+        subsegments_ = std::move(other.subsegments_);
+        spare_mutex_ = std::move(other.spare_mutex_);
+        spares_ = std::move(other.spares_);
+        other.triangle_chunks_ = 0;
+        other.vertex_end_ = 0;
+    }
+    return *this;
+}
+
+VertexId Mesh::claim_vertices(std::uint32_t count) {
+    // Two ids are reserved (ghost_vertex, no_vertex).
+    constexpr std::uint64_t limit = index(ghost_vertex);
+    std::uint32_t first = vertex_end_.load(std::memory_order_relaxed);
+    do {
+        if (std::uint64_t{first} + count > limit)
+            throw Error("mesh: more than " + std::to_string(limit) + " vertices");
+    } while (!vertex_end_.compare_exchange_weak(first, first + count, std::memory_order_acq_rel));
+    if (count > 0) {
+        const std::uint32_t last = first + count - 1;
+        for (std::uint32_t c = first >> vertex_chunk_bits; c <= last >> vertex_chunk_bits; ++c) {
+            points_.ensure(c);
+            kinds_.ensure(c);
+        }
+    }
+    return VertexId{first};
+}
+
+VertexId Mesh::add_vertices(std::span<const Point> points, VertexKind kind) {
+    if (points.size() > index(ghost_vertex))
+        throw Error("mesh: more than " + std::to_string(index(ghost_vertex)) + " vertices");
+    const VertexId first = claim_vertices(static_cast<std::uint32_t>(points.size()));
+    std::uint32_t v = index(first);
+    for (const Point& p : points) {
+        points_[v] = p;
+        kinds_[v] = kind;
+        ++v;
+    }
+    return first;
+}
+
+std::size_t Mesh::count_triangles() const {
+    std::size_t live = 0;
+    const std::uint32_t end = triangle_end();
+    for (std::uint32_t t = 0; t < end; ++t) live += triangles_[t].live() ? 1 : 0;
+    return live;
+}
+
+Mesh::SpareSlots Mesh::claim_triangle_chunk() {
+    const std::uint32_t c = triangle_chunks_.fetch_add(1, std::memory_order_acq_rel);
+    if (c >= TriangleTable::max_chunks) {
+        triangle_chunks_.fetch_sub(1, std::memory_order_acq_rel);
+        throw Error("mesh: more than " + std::to_string(max_triangles) + " triangles");
+    }
+    triangles_.ensure(c);
+    SpareSlots s;
+    s.fresh = c << triangle_chunk_bits;
+    s.fresh_end = s.fresh + TriangleTable::chunk_size;
+    return s;
+}
+
+void Mesh::give_back(const SpareSlots& spare) {
+    if (spare.free_head == index(no_triangle) && spare.fresh == spare.fresh_end) return;
+    std::lock_guard lock(*spare_mutex_);
+    spares_.push_back(spare);
+}
+
+bool Mesh::take_back(SpareSlots& spare) {
+    std::lock_guard lock(*spare_mutex_);
+    if (spares_.empty()) return false;
+    spare = spares_.back();
+    spares_.pop_back();
+    return true;
+}
+
+}  // namespace gpdr::mesh

@@ -1,0 +1,134 @@
+#pragma once
+// The mesh: vertex store, triangle store and subsegment side table.
+//
+// Everything is addressed by ids (ids.hpp) into never-moving chunked storage
+// (store.hpp).  Triangles are created and destroyed only through a Pool
+// (pool.hpp), which a thread owns; Mesh itself only hands out fresh chunks and
+// takes back what a finished pool did not use.  Vertices are never removed;
+// their ids are claimed in ranges (several threads may claim at once).
+//
+// Sizes: a triangle is 32 bytes (triangle.hpp); a vertex is 16 bytes of
+// coordinates plus 1 byte of kind.  Attributes and markers of vertices live in
+// side arrays owned by the caller, indexed by VertexId.
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <span>
+#include <vector>
+
+#include "geometry/point.hpp"
+#include "mesh/ids.hpp"
+#include "mesh/store.hpp"
+#include "mesh/subsegments.hpp"
+#include "mesh/triangle.hpp"
+
+namespace gpdr::mesh {
+
+using geometry::Point;
+
+// What a vertex is.  `unused` marks ids claimed but never filled (a pool's
+// unfinished block) and is what a fresh slot reads as.
+enum class VertexKind : std::uint8_t {
+    unused = 0,
+    input,      // an input vertex in the triangulation
+    duplicate,  // an input vertex equal to another one, left out of the triangulation
+    segment,    // a Steiner point on a segment
+    free,       // a Steiner point in the interior
+};
+
+class Mesh {
+public:
+    static constexpr unsigned triangle_chunk_bits = 16;  // 2 MiB per chunk
+    static constexpr unsigned vertex_chunk_bits = 16;    // 1 MiB of points per chunk
+    using TriangleTable = ChunkTable<Triangle, triangle_chunk_bits, (max_triangles >> triangle_chunk_bits)>;
+    using PointTable = ChunkTable<Point, vertex_chunk_bits, (1u << (32 - vertex_chunk_bits))>;
+    using KindTable = ChunkTable<VertexKind, vertex_chunk_bits, (1u << (32 - vertex_chunk_bits))>;
+
+    Mesh();
+    Mesh(Mesh&& other) noexcept;
+    Mesh& operator=(Mesh&& other) noexcept;
+    Mesh(const Mesh&) = delete;
+    Mesh& operator=(const Mesh&) = delete;
+    ~Mesh();
+
+    // ---- vertices ----------------------------------------------------------
+    // Claims `count` consecutive vertex ids and returns the first; their kind
+    // reads `unused` until set.  Thread-safe.  Throws gpdr::Error past 2^32-2.
+    VertexId claim_vertices(std::uint32_t count);
+    // Appends points with consecutive ids (the first is returned).
+    VertexId add_vertices(std::span<const Point> points, VertexKind kind);
+    VertexId add_vertex(const Point& p, VertexKind kind) { return add_vertices({&p, 1}, kind); }
+
+    const Point& point(VertexId v) const { return points_[index(v)]; }
+    void set_point(VertexId v, const Point& p) { points_[index(v)] = p; }
+    VertexKind kind(VertexId v) const { return kinds_[index(v)]; }
+    void set_kind(VertexId v, VertexKind k) { kinds_[index(v)] = k; }
+    // One past the largest vertex id claimed so far.
+    std::uint32_t vertex_end() const { return vertex_end_.load(std::memory_order_acquire); }
+
+    // ---- triangles ---------------------------------------------------------
+    Triangle& triangle(TriangleId t) { return triangles_[index(t)]; }
+    const Triangle& triangle(TriangleId t) const { return triangles_[index(t)]; }
+    // The neighbour reference across edge e (EdgeRef::none() on the hull).
+    EdgeRef neighbour(EdgeRef e) const { return triangle(e.triangle()).n[e.edge()]; }
+    // Makes a and b neighbours of each other; either may be none.
+    void link(EdgeRef a, EdgeRef b) {
+        if (!a.is_none()) triangle(a.triangle()).n[a.edge()] = b;
+        if (!b.is_none()) triangle(b.triangle()).n[b.edge()] = a;
+    }
+    // Edge e runs from origin to destination; apex is the corner opposite.
+    VertexId origin(EdgeRef e) const { return triangle(e.triangle()).v[next3(e.edge())]; }
+    VertexId destination(EdgeRef e) const { return triangle(e.triangle()).v[prev3(e.edge())]; }
+    VertexId apex(EdgeRef e) const { return triangle(e.triangle()).v[e.edge()]; }
+
+    // One past the largest triangle id ever handed out; ids below it are
+    // live or dead slots (Triangle::live()).
+    std::uint32_t triangle_end() const {
+        return triangle_chunks_.load(std::memory_order_acquire) << triangle_chunk_bits;
+    }
+    // Live triangles, counted by a pass over the store (O(slots)).
+    std::size_t count_triangles() const;
+
+    // ---- subsegments -------------------------------------------------------
+    SubsegmentTable& subsegments() { return subsegments_; }
+    const SubsegmentTable& subsegments() const { return subsegments_; }
+
+    // Bytes held by the vertex and triangle stores (not the side table).
+    std::size_t triangle_store_bytes() const { return triangles_.bytes(); }
+    std::size_t vertex_store_bytes() const { return points_.bytes() + kinds_.bytes(); }
+
+    // ---- for Pool only -----------------------------------------------------
+    // Triangle slots a pool owns and has not used: an intrusive free list
+    // (linked through n[0] of dead slots) and a fresh range [fresh, fresh_end).
+    struct SpareSlots {
+        std::uint32_t free_head = index(no_triangle);
+        std::uint32_t fresh = 0;
+        std::uint32_t fresh_end = 0;
+    };
+    // Claims a fresh chunk of triangle slots.  Thread-safe, lock-free.
+    SpareSlots claim_triangle_chunk();
+    // A finished pool gives back what it did not use; a new pool takes it.
+    // (Mutex: called once per pool lifetime, never in the hot path.)
+    void give_back(const SpareSlots& spare);
+    bool take_back(SpareSlots& spare);
+    // A finished pool returns the unused tail [next, end) of its vertex
+    // block; it is taken back only if it is still the last block claimed.
+    void give_back_vertices(std::uint32_t next, std::uint32_t end) {
+        if (next < end) vertex_end_.compare_exchange_strong(end, next, std::memory_order_acq_rel);
+    }
+
+private:
+    TriangleTable triangles_;
+    PointTable points_;
+    KindTable kinds_;
+    std::atomic<std::uint32_t> triangle_chunks_{0};
+    std::atomic<std::uint32_t> vertex_end_{0};
+    SubsegmentTable subsegments_;
+    std::unique_ptr<std::mutex> spare_mutex_;
+    std::vector<SpareSlots> spares_;
+};
+
+}  // namespace gpdr::mesh

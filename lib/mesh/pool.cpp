@@ -1,0 +1,42 @@
+// Pool: refilling from the mesh, and giving back what was not used.
+
+#include "mesh/pool.hpp"
+
+#include <string>
+
+#include <gpdr/errors.hpp>
+
+namespace gpdr::mesh {
+
+Pool::Pool(Mesh& mesh, std::uint32_t vertex_block)
+    : mesh_(&mesh), vertex_block_(vertex_block == 0 ? 1 : vertex_block) {
+    mesh_->take_back(spare_);
+}
+
+Pool::~Pool() {
+    mesh_->give_back(spare_);
+    mesh_->give_back_vertices(vertex_next_, vertex_end_);
+}
+
+void Pool::destroyed_twice(TriangleId t) {
+    throw Error("mesh: triangle " + std::to_string(index(t)) + " destroyed while already dead");
+}
+
+void Pool::refill() {
+    // A free list given back earlier comes first; otherwise a fresh chunk.
+    // (Only called with an empty free list and fresh range.)
+    if (!mesh_->take_back(spare_)) spare_ = mesh_->claim_triangle_chunk();
+}
+
+VertexId Pool::new_vertex(const Point& p, VertexKind kind) {
+    if (vertex_next_ == vertex_end_) {
+        vertex_next_ = index(mesh_->claim_vertices(vertex_block_));
+        vertex_end_ = vertex_next_ + vertex_block_;
+    }
+    const VertexId v{vertex_next_++};
+    mesh_->set_point(v, p);
+    mesh_->set_kind(v, kind);
+    return v;
+}
+
+}  // namespace gpdr::mesh

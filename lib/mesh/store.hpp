@@ -1,0 +1,90 @@
+#pragma once
+// ChunkTable: storage whose elements never move (DESIGN.md "The mesh").
+//
+// Element i lives in chunk i >> ChunkBits at offset i & mask.  The table of
+// chunk pointers is reserved up front, so an id handed out once stays valid
+// and a reference to an element stays stable while other threads add chunks.
+// Chunks come from calloc: pages nobody touches cost nothing, and an all-zero
+// element must therefore be a valid "empty" element of T.
+//
+// Thread safety: ensure() may be called by several threads at once (the first
+// to publish a chunk wins, lock-free).  Element access needs no lock: a thread
+// only reads elements whose ids reached it through some synchronisation (the
+// scheduler's queue), which also orders the chunk pointer's publication.
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <memory>
+#include <new>
+
+namespace gpdr::mesh {
+
+template <class T, unsigned ChunkBits, std::uint32_t MaxChunks>
+class ChunkTable {
+public:
+    static constexpr std::uint32_t chunk_size = 1u << ChunkBits;
+    static constexpr std::uint32_t chunk_mask = chunk_size - 1;
+    static constexpr std::uint32_t max_chunks = MaxChunks;
+
+    ChunkTable() : chunks_(new std::atomic<T*>[MaxChunks]) {}
+    ~ChunkTable() { release(); }
+    ChunkTable(ChunkTable&& other) noexcept
+        : chunks_(std::move(other.chunks_)), allocated_(other.allocated_.load()) {
+        other.allocated_ = 0;
+    }
+    ChunkTable& operator=(ChunkTable&& other) noexcept {
+        if (this != &other) {
+            release();
+            chunks_ = std::move(other.chunks_);
+            allocated_ = other.allocated_.load();
+            other.allocated_ = 0;
+        }
+        return *this;
+    }
+    ChunkTable(const ChunkTable&) = delete;
+    ChunkTable& operator=(const ChunkTable&) = delete;
+
+    T& operator[](std::uint32_t i) const {
+        return chunks_[i >> ChunkBits].load(std::memory_order_acquire)[i & chunk_mask];
+    }
+
+    bool has_chunk(std::uint32_t c) const {
+        return c < MaxChunks && chunks_[c].load(std::memory_order_acquire) != nullptr;
+    }
+
+    // Makes sure chunk c exists (zero-filled).  Returns false when c is past
+    // the reserved table.  Throws std::bad_alloc when memory runs out.
+    bool ensure(std::uint32_t c) {
+        if (c >= MaxChunks) return false;
+        if (chunks_[c].load(std::memory_order_acquire) != nullptr) return true;
+        T* fresh = static_cast<T*>(std::calloc(chunk_size, sizeof(T)));
+        if (fresh == nullptr) throw std::bad_alloc();
+        T* expected = nullptr;
+        if (chunks_[c].compare_exchange_strong(expected, fresh, std::memory_order_acq_rel))
+            allocated_.fetch_add(1, std::memory_order_relaxed);
+        else
+            std::free(fresh);
+        return true;
+    }
+
+    std::size_t allocated_chunks() const { return allocated_.load(std::memory_order_relaxed); }
+    // Bytes held: the chunks and the pointer table.
+    std::size_t bytes() const {
+        return allocated_chunks() * std::size_t{chunk_size} * sizeof(T) +
+               std::size_t{MaxChunks} * sizeof(std::atomic<T*>);
+    }
+
+private:
+    void release() {
+        if (!chunks_) return;
+        for (std::uint32_t c = 0; c < MaxChunks; ++c) std::free(chunks_[c].exchange(nullptr));
+        allocated_ = 0;
+    }
+
+    std::unique_ptr<std::atomic<T*>[]> chunks_;
+    std::atomic<std::size_t> allocated_{0};
+};
+
+}  // namespace gpdr::mesh

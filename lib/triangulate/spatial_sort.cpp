@@ -1,0 +1,125 @@
+// BRIO rounds with Hilbert order inside each (see spatial_sort.hpp).  Sorting
+// is by least-significant-digit radix sort on the 32-bit curve position
+// (four 8-bit passes) for large rounds, std::sort for small ones.
+
+#include "triangulate/spatial_sort.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <limits>
+
+namespace gpdr::triangulate {
+
+namespace {
+
+std::uint64_t mix(std::uint64_t z) {
+    // splitmix64's finaliser: a cheap, well-spread hash of the index.
+    z += 0x9E3779B97F4A7C15ull;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+// Sorts keys (curve position << 32 | index) by their upper 32 bits.
+void sort_by_curve(std::uint64_t* begin, std::uint64_t* end, std::vector<std::uint64_t>& scratch) {
+    const std::size_t n = static_cast<std::size_t>(end - begin);
+    if (n < 4096) {
+        std::sort(begin, end);
+        return;
+    }
+    scratch.resize(n);
+    // Four 8-bit passes: 256 output streams stay in cache while scattering.
+    std::vector<std::uint32_t> count(256);
+    std::uint64_t* from = begin;
+    std::uint64_t* to = scratch.data();
+    for (int shift : {32, 40, 48, 56}) {
+        std::fill(count.begin(), count.end(), 0u);
+        for (std::size_t i = 0; i < n; ++i) ++count[(from[i] >> shift) & 0xFFu];
+        std::uint32_t sum = 0;
+        for (auto& c : count) {
+            const std::uint32_t here = c;
+            c = sum;
+            sum += here;
+        }
+        for (std::size_t i = 0; i < n; ++i) to[count[(from[i] >> shift) & 0xFFu]++] = from[i];
+        std::swap(from, to);
+    }
+    // An even number of passes: the result is back in `begin`.
+}
+
+}  // namespace
+
+std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y) {
+    // The textbook loop rotates the remaining coordinates at each level:
+    // complement both when (rx, ry) = (1, 0), swap them when ry = 0.  Both
+    // maps commute, so the whole history is two bits (complemented,
+    // swapped), applied to each level's bits as they are read: no branches
+    // (the textbook branches are unpredictable on random points).
+    std::uint32_t d = 0, complemented = 0, swapped = 0;
+    for (int level = 15; level >= 0; --level) {
+        const std::uint32_t bx = (x >> level) & 1u, by = (y >> level) & 1u;
+        const std::uint32_t exchange = (bx ^ by) & swapped;
+        const std::uint32_t rx = bx ^ exchange ^ complemented;
+        const std::uint32_t ry = by ^ exchange ^ complemented;
+        d = (d << 2) | ((3u * rx) ^ ry);
+        const std::uint32_t turn = ry ^ 1u;
+        complemented ^= turn & rx;
+        swapped ^= turn;
+    }
+    return d;
+}
+
+std::vector<std::uint32_t> brio_order(std::span<const geometry::Point> points, std::uint64_t seed) {
+    const std::size_t n = points.size();
+    std::vector<std::uint32_t> order(n);
+    if (n == 0) return order;
+
+    double min_x = std::numeric_limits<double>::infinity(), max_x = -min_x;
+    double min_y = min_x, max_y = max_x;
+    for (const auto& p : points) {
+        min_x = std::min(min_x, p.x), max_x = std::max(max_x, p.x);
+        min_y = std::min(min_y, p.y), max_y = std::max(max_y, p.y);
+    }
+    // Halved to keep the differences finite for any finite coordinates.
+    const double span_x = max_x / 2 - min_x / 2, span_y = max_y / 2 - min_y / 2;
+    const double scale_x = span_x > 0 ? 65535.0 / span_x : 0.0;
+    const double scale_y = span_y > 0 ? 65535.0 / span_y : 0.0;
+    auto cell = [](double offset, double scale) {
+        const double c = offset * scale;
+        return c <= 0 ? 0u : c >= 65535.0 ? 65535u : static_cast<std::uint32_t>(c);
+    };
+
+    // Rounds: the first holds about 64 points (or all when n is small).
+    int rounds = 0;
+    while ((n >> (rounds + 1)) >= 64 && rounds < 40) ++rounds;
+    auto round_of = [&](std::size_t i) {
+        const std::uint64_t h = mix(i ^ (seed * 0xD1B54A32D192ED03ull));
+        return std::min(std::countr_zero(h | (1ull << 63)), rounds);
+    };
+
+    // Counting sort by round (highest round first), then the curve inside.
+    std::vector<std::size_t> start(static_cast<std::size_t>(rounds) + 2, 0);
+    std::vector<std::uint8_t> round(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        round[i] = static_cast<std::uint8_t>(rounds - round_of(i));
+        ++start[round[i] + 1u];
+    }
+    for (std::size_t r = 1; r < start.size(); ++r) start[r] += start[r - 1];
+    std::vector<std::uint64_t> keys(n);
+    {
+        std::vector<std::size_t> next(start.begin(), start.end() - 1);
+        for (std::size_t i = 0; i < n; ++i) {
+            const auto& p = points[i];
+            const std::uint64_t h =
+                hilbert_index(cell(p.x / 2 - min_x / 2, scale_x), cell(p.y / 2 - min_y / 2, scale_y));
+            keys[next[round[i]]++] = (h << 32) | static_cast<std::uint64_t>(i);
+        }
+    }
+    std::vector<std::uint64_t> scratch;
+    for (std::size_t r = 0; r + 1 < start.size(); ++r)
+        sort_by_curve(keys.data() + start[r], keys.data() + start[r + 1], scratch);
+    for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<std::uint32_t>(keys[i]);
+    return order;
+}
+
+}  // namespace gpdr::triangulate

@@ -1,0 +1,138 @@
+// The built-in placement strategies (see placement.hpp): circumcentre,
+// Üngör's off-centre, and the GPDR paper's optimisation over the arc Γ.
+
+#include "refine/placement.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "mesh/insert.hpp"
+
+namespace gpdr::refine {
+
+using geometry::Point;
+
+PoorTriangle describe_poor_triangle(const mesh::Mesh& mesh, mesh::TriangleId id, const QualityTest& quality) {
+    PoorTriangle t;
+    t.mesh = &mesh;
+    t.id = id;
+    const mesh::Triangle& r = mesh.triangle(id);
+    for (int k = 0; k < 3; ++k) t.corner[k] = mesh.point(r.v[k]);
+    t.circle = geometry::circumcircle(t.corner[0], t.corner[1], t.corner[2]);
+    const geometry::EdgeLength e = geometry::shortest_edge(t.corner[0], t.corner[1], t.corner[2]);
+    t.shortest_edge = e.edge;
+    t.shortest_length = std::sqrt(e.length_squared);
+    t.rho_bar = quality.rho_bar();
+    t.disk = {t.circle.centre, std::sqrt(t.circle.radius_squared) - std::numbers::sqrt2 * t.shortest_length};
+    t.quality = &quality;
+    return t;
+}
+
+Point CircumcentrePlacement::place(const PoorTriangle& t, PlacementScratch&) const { return t.circle.centre; }
+
+Point OffCentrePlacement::place(const PoorTriangle& t, PlacementScratch&) const {
+    const Point p = geometry::off_centre(t.corner[0], t.corner[1], t.corner[2], t.rho_bar);
+    return in_selection_disk(t, p) ? p : t.circle.centre;
+}
+
+int OptimisationPlacement::cavity_penalty(const PoorTriangle& t, const Point& p, PlacementScratch& scratch) {
+    const mesh::Mesh& mesh = *t.mesh;
+    auto& cavity = scratch.cavity;
+    cavity.clear();
+    // p is strictly inside t's circumcircle (it is in the selection disk),
+    // so t is in the cavity; grow it without crossing subsegments.  The
+    // visited test is a linear search: cavities are a handful of triangles,
+    // and the limit keeps a pathological one cheap.
+    constexpr std::size_t limit = 256;
+    cavity.push_back(t.id);
+    int total = 0;
+    for (std::size_t i = 0; i < cavity.size(); ++i) {
+        const mesh::TriangleId id = cavity[i];
+        int penalty = 0;
+        bool known = false;
+        for (const auto& s : scratch.scores)
+            if (s.id == id) {
+                penalty = s.penalty;
+                known = true;
+                break;
+            }
+        if (!known) {
+            const mesh::Triangle& r = mesh.triangle(id);
+            const TriangleMeasures m =
+                QualityTest::measure(mesh.point(r.v[0]), mesh.point(r.v[1]), mesh.point(r.v[2]));
+            penalty = t.quality->assess(mesh, id, m) == Poorness::good ? 1 : -1;
+            scratch.scores.push_back({id, penalty});
+        }
+        total += penalty;
+        if (cavity.size() >= limit) continue;
+        const mesh::Triangle& r = mesh.triangle(id);
+        for (int k = 0; k < 3; ++k) {
+            const mesh::EdgeRef across = r.n[k];
+            if (across.is_none() || r.is_subsegment(k)) continue;
+            const mesh::TriangleId u = across.triangle();
+            bool seen = false;
+            for (mesh::TriangleId c : cavity) seen = seen || c == u;
+            if (!seen && mesh::in_circumcircle(mesh, mesh.triangle(u), p)) cavity.push_back(u);
+        }
+    }
+    return total;
+}
+
+Point OptimisationPlacement::place(const PoorTriangle& t, PlacementScratch& scratch) const {
+    scratch.scores.clear();
+    const Point off = geometry::off_centre(t.corner[0], t.corner[1], t.corner[2], t.rho_bar);
+    Point best = t.circle.centre;
+    int best_score = 0;
+    bool have = false;
+    if (in_selection_disk(t, off)) {
+        best = off;
+        best_score = cavity_penalty(t, off, scratch);
+        have = true;
+    }
+
+    // Γ: the circle through the shortest edge's ends and the off-centre.
+    const Point& p = t.corner[mesh::next3(t.shortest_edge)];
+    const Point& q = t.corner[mesh::prev3(t.shortest_edge)];
+    if (geometry::orient2d(p, q, off) != 0) {
+        const geometry::Circle gamma = geometry::circumcircle(p, q, off);
+        const double rg = std::sqrt(gamma.radius_squared);
+        const double dx = t.disk.centre.x - gamma.centre.x;
+        const double dy = t.disk.centre.y - gamma.centre.y;
+        const double d = std::sqrt(dx * dx + dy * dy);
+        const double R = t.disk.radius;
+        // Γ meets the disk's boundary at angles beta ± alpha (seen from Γ's
+        // centre); the part of Γ inside the disk is the arc around beta.
+        if (d > 0 && d < rg + R && d > std::abs(rg - R)) {
+            const double cos_alpha = (d * d + rg * rg - R * R) / (2 * d * rg);
+            const double alpha = std::acos(std::fmax(-1.0, std::fmin(1.0, cos_alpha)));
+            const double beta = std::atan2(dy, dx);
+            for (int i = 0; i < samples_; ++i) {
+                const double s = -1.0 + 2.0 * (i + 1) / (samples_ + 1);
+                const double phi = beta + alpha * s;
+                const Point c{gamma.centre.x + rg * std::cos(phi), gamma.centre.y + rg * std::sin(phi)};
+                if (!in_selection_disk(t, c)) continue;
+                const int score = cavity_penalty(t, c, scratch);
+                if (!have || score < best_score) {
+                    best = c;
+                    best_score = score;
+                    have = true;
+                }
+            }
+        }
+    }
+    return have ? best : t.circle.centre;
+}
+
+const PlacementStrategy& builtin_placement(Placement kind) {
+    static const CircumcentrePlacement circumcentre;
+    static const OffCentrePlacement off_centre;
+    static const OptimisationPlacement optimisation;
+    switch (kind) {
+    case Placement::circumcentre: return circumcentre;
+    case Placement::optimisation: return optimisation;
+    case Placement::off_centre: break;
+    }
+    return off_centre;
+}
+
+}  // namespace gpdr::refine

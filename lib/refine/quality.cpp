@@ -1,0 +1,68 @@
+// The quality tests of quality.hpp, in Triangle's order.
+
+#include "refine/quality.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "refine/segments.hpp"
+
+namespace gpdr::refine {
+
+using geometry::Point;
+
+QualityTest::QualityTest(const QualityCriteria& criteria, SegmentEnds segments)
+    : criteria_(criteria), segments_(segments) {
+    angle_test_ = criteria_.min_angle_degrees > 0;
+    if (angle_test_) {
+        const double s = std::sin(criteria_.min_angle_degrees * std::numbers::pi / 180.0);
+        rho_bar_ = 1.0 / (2.0 * s);
+        rho_bar_squared_ = rho_bar_ * rho_bar_;
+    } else {
+        rho_bar_ = std::numeric_limits<double>::infinity();
+        rho_bar_squared_ = rho_bar_;
+    }
+    bool regional = false;
+    for (double a : criteria_.region_max_area) regional = regional || a > 0;
+    area_test_ = criteria_.max_area > 0 || regional || criteria_.triangle_max_area != nullptr;
+}
+
+TriangleMeasures QualityTest::measure(const Point& a, const Point& b, const Point& c) {
+    return {geometry::circumcircle(a, b, c), geometry::shortest_edge(a, b, c), geometry::signed_area(a, b, c)};
+}
+
+Poorness QualityTest::assess(const mesh::Mesh& mesh, mesh::TriangleId t, const TriangleMeasures& m,
+                             bool* protected_angle) const {
+    if (protected_angle) *protected_angle = false;
+    const mesh::Triangle& r = mesh.triangle(t);
+    if (area_test_) {
+        if (criteria_.max_area > 0 && m.area > criteria_.max_area) return Poorness::too_big;
+        if (r.region < criteria_.region_max_area.size()) {
+            const double bound = criteria_.region_max_area[r.region];
+            if (bound > 0 && m.area > bound) return Poorness::too_big;
+        }
+        if (criteria_.triangle_max_area != nullptr) {
+            const double bound = criteria_.triangle_max_area->get(t);
+            if (bound > 0 && m.area > bound) return Poorness::too_big;
+        }
+    }
+    if (criteria_.user_test != nullptr) {
+        const Point& a = mesh.point(r.v[0]);
+        const Point& b = mesh.point(r.v[1]);
+        const Point& c = mesh.point(r.v[2]);
+        double org[2] = {a.x, a.y}, dest[2] = {b.x, b.y}, apex[2] = {c.x, c.y};
+        if (criteria_.user_test(org, dest, apex, m.area) != 0) return Poorness::unsuitable;
+    }
+    if (bad_shape(m)) {
+        // Leave alone a triangle whose small angle an input angle forces.
+        if (small_angle_protected(mesh, t, m.shortest.edge, segments_)) {
+            if (protected_angle) *protected_angle = true;
+            return Poorness::good;
+        }
+        return Poorness::bad_angle;
+    }
+    return Poorness::good;
+}
+
+}  // namespace gpdr::refine

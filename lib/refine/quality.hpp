@@ -1,0 +1,94 @@
+#pragma once
+// Quality criteria: when is a triangle "poor" and must be refined (Triangle's
+// -q, -a, bare -a with regions or an .area file, -u).
+//
+// The tests, in Triangle's order (its documentation: the user test comes
+// after the area checks, and the angle test last):
+//   1. global area bound      area > max_area                      (-a<A>)
+//   2. regional area bound    area > region_max_area[t.region]     (-a with .poly regions)
+//   3. per-triangle bound     area > bound of the triangle          (-ra with an .area file)
+//   4. user test              triunsuitable(org, dest, apex, area) != 0   (-u)
+//   5. angle bound            r / l > rho_bar = 1 / (2 sin theta), compared as squares
+//                             (r circumradius, l shortest edge), unless a small input
+//                             angle forces the small angle (small_angle.hpp).
+// A bound <= 0 means "no bound"; theta = 0 means no angle test.
+//
+// Thread safety: QualityTest is immutable after construction and may be
+// shared by threads.  The user test is called from several threads at once
+// when refinement runs in parallel: it must be thread-safe (a pure function
+// of its arguments is).
+
+#include <cstdint>
+#include <vector>
+
+#include "geometry/constructions.hpp"
+#include "mesh/mesh.hpp"
+#include "refine/area_bounds.hpp"
+#include "refine/segments.hpp"
+
+namespace gpdr::refine {
+
+// Triangle's triunsuitable() prototype: each pointer addresses x then y of
+// one corner (corners counter-clockwise: org, dest, apex); area > 0.  gpdr
+// passes copies of the coordinates only (vertex attributes stay with the
+// caller).  Non-zero: the triangle is too big / unsuitable, refine it.
+using UserTest = int (*)(double* org, double* dest, double* apex, double area);
+
+struct QualityCriteria {
+    double min_angle_degrees = 0;  // -q; 0: no angle test
+    double max_area = -1;          // -a<A>; <= 0: no bound
+    // Indexed by Triangle::region (the CDT numbers region i of the .poly as
+    // i + 1 and leaves 0 for "no region"); an entry <= 0 or an index past
+    // the end: no bound.
+    std::vector<double> region_max_area;
+    // -ra: per-triangle bounds (not owned; refinement keeps it up to date,
+    // see area_bounds.hpp for how new triangles inherit).  nullptr: none.
+    AreaBounds* triangle_max_area = nullptr;
+    UserTest user_test = nullptr;  // -u
+};
+
+// Why a triangle is poor (several may hold; the first in test order is kept).
+enum class Poorness : std::uint8_t { good, too_big, unsuitable, bad_angle };
+
+// The measures every caller needs anyway, computed once.
+struct TriangleMeasures {
+    geometry::Circle circle;        // circumcircle
+    geometry::EdgeLength shortest;  // shortest edge (index = opposite corner)
+    double area = 0;
+};
+
+class QualityTest {
+public:
+    // `segments`: the input segments' ends, for the small-input-angle rule
+    // (may be empty, see segments.hpp).
+    explicit QualityTest(const QualityCriteria& criteria, SegmentEnds segments = {});
+
+    const QualityCriteria& criteria() const { return criteria_; }
+    // rho_bar = 1 / (2 sin theta); +infinity when there is no angle test.
+    double rho_bar() const { return rho_bar_; }
+    bool has_angle_test() const { return angle_test_; }
+    bool has_area_test() const { return area_test_; }
+
+    static TriangleMeasures measure(const geometry::Point& a, const geometry::Point& b, const geometry::Point& c);
+
+    // Tests 1-5 on live triangle t (measures from measure()).  The angle test
+    // leaves a triangle alone when a small input angle forces its angle
+    // (`protected_angle` is then set, and the result is good).
+    Poorness assess(const mesh::Mesh& mesh, mesh::TriangleId t, const TriangleMeasures& m,
+                    bool* protected_angle = nullptr) const;
+
+    // Only the shape: r^2 > rho_bar^2 l^2.
+    bool bad_shape(const TriangleMeasures& m) const {
+        return angle_test_ && m.circle.radius_squared > rho_bar_squared_ * m.shortest.length_squared;
+    }
+
+private:
+    QualityCriteria criteria_;
+    SegmentEnds segments_;
+    double rho_bar_ = 0;
+    double rho_bar_squared_ = 0;
+    bool angle_test_ = false;
+    bool area_test_ = false;
+};
+
+}  // namespace gpdr::refine

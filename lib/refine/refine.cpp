@@ -1,0 +1,479 @@
+// The refinement loop of one leaf and the sequential driver (see
+// refine.hpp for the algorithm, its limits and its termination guards).
+
+#include "refine/refine.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <gpdr/errors.hpp>
+
+#include "geometry/predicates.hpp"
+#include "mesh/locate.hpp"
+#include "mesh/split_subsegment.hpp"
+#include "mesh/traverse.hpp"
+#include "refine/segments.hpp"
+
+namespace gpdr::refine {
+
+using geometry::Point;
+using mesh::EdgeRef;
+using mesh::TriangleId;
+using mesh::VertexId;
+
+namespace {
+
+constexpr std::uint8_t reason_no_split = 0;
+constexpr std::uint8_t reason_precision = 1;
+
+// 2^-40: below this fraction of the domain's diameter an edge is "too small
+// for double precision" (about 12 significant bits are left for the
+// constructions), and a Steiner point this close (relative to the
+// circumradius) to a vertex makes no progress.
+constexpr double tiny_fraction = 0x1p-40;
+
+bool finite(const Point& p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+
+// Where a walk from a triangle toward p ended.
+struct Walk {
+    enum class Kind : std::uint8_t { located, blocked, lost } kind = Kind::lost;
+    mesh::LocateResult where;
+    EdgeRef blocking;  // blocked: the subsegment or hull edge in the way
+};
+
+// The remembering stochastic walk of mesh/locate.cpp, except that it never
+// crosses a subsegment or leaves the mesh: when p lies beyond such an edge
+// and no other edge leads on, the walk reports that edge.
+Walk walk_to(const mesh::Mesh& mesh, TriangleId start, const Point& p, std::uint32_t& random_state) {
+    TriangleId t = start;
+    int from = -1;
+    for (std::uint64_t steps = 0; steps < 4ull * mesh.triangle_end() + 64; ++steps) {
+        const mesh::Triangle& r = mesh.triangle(t);
+        const Point* corner[3] = {&mesh.point(r.v[0]), &mesh.point(r.v[1]), &mesh.point(r.v[2])};
+        random_state = random_state * 1664525u + 1013904223u;
+        const int first = static_cast<int>((random_state >> 16) % 3u);
+        double o[3] = {1, 1, 1};
+        int blocked = -1;
+        bool moved = false;
+        for (int i = 0; i < 3 && !moved; ++i) {
+            const int k = (first + i) % 3;
+            if (k == from) continue;
+            o[k] = geometry::orient2d(*corner[mesh::next3(k)], *corner[mesh::prev3(k)], p);
+            if (o[k] >= 0) continue;
+            if (r.n[k].is_none() || r.is_subsegment(k)) {
+                blocked = k;
+                continue;
+            }
+            from = r.n[k].edge();
+            t = r.n[k].triangle();
+            moved = true;
+        }
+        if (moved) continue;
+        Walk w;
+        if (blocked >= 0) {
+            w.kind = Walk::Kind::blocked;
+            w.blocking = EdgeRef(t, blocked);
+            return w;
+        }
+        w.kind = Walk::Kind::located;
+        const int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
+        if (zeros == 0)
+            w.where = {t, mesh::Location::inside, 0};
+        else if (zeros == 1)
+            w.where = {t, mesh::Location::on_edge, o[0] == 0 ? 0 : o[1] == 0 ? 1 : 2};
+        else
+            w.where = {t, mesh::Location::on_vertex, o[0] != 0 ? 0 : o[1] != 0 ? 1 : 2};
+        return w;
+    }
+    return {};
+}
+
+}  // namespace
+
+// ---- RefineRun ---------------------------------------------------------------
+
+RefineRun::RefineRun(const mesh::Mesh& mesh, const RefineSettings& settings)
+    : settings_(settings),
+      quality_(settings_.criteria, SegmentEnds{settings_.segment_ends}),
+      strategy_(settings_.strategy != nullptr ? settings_.strategy : &builtin_placement(settings_.placement)) {
+    double min_x = std::numeric_limits<double>::infinity(), max_x = -min_x, min_y = min_x, max_y = -min_x;
+    std::uint64_t triangles = 0;
+    double expected = 0;  // triangles the area bounds alone call for
+    const QualityCriteria& c = settings_.criteria;
+    mesh::for_each_triangle(mesh, [&](TriangleId id, const mesh::Triangle& t) {
+        ++triangles;
+        for (VertexId v : t.v) {
+            const Point& p = mesh.point(v);
+            min_x = std::min(min_x, p.x);
+            max_x = std::max(max_x, p.x);
+            min_y = std::min(min_y, p.y);
+            max_y = std::max(max_y, p.y);
+        }
+        double bound = std::numeric_limits<double>::infinity();
+        if (c.max_area > 0) bound = c.max_area;
+        if (t.region < c.region_max_area.size() && c.region_max_area[t.region] > 0)
+            bound = std::min(bound, c.region_max_area[t.region]);
+        if (c.triangle_max_area != nullptr && c.triangle_max_area->get(id) > 0)
+            bound = std::min(bound, c.triangle_max_area->get(id));
+        if (std::isfinite(bound))
+            expected += geometry::signed_area(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2])) / bound;
+    });
+    const double diameter = triangles == 0 ? 0.0 : std::hypot(max_x - min_x, max_y - min_y);
+    tiny_length_squared_ = (diameter * tiny_fraction) * (diameter * tiny_fraction);
+
+    // The safety budget: far above what a terminating refinement needs (an
+    // area bound needs about 2 area/bound triangles, one vertex per two
+    // triangles; an angle bound a multiple of the input's size for sane
+    // inputs), far below what the mesh can hold.  A user test can ask for
+    // anything, so it only gets the mesh's capacity.
+    constexpr double capacity = double(mesh::max_triangles / 2 - 16);
+    double limit = settings_.safety_limit > 0 ? double(settings_.safety_limit)
+                   : c.user_test != nullptr   ? capacity
+                                              : double(1u << 20) + 64.0 * (double(triangles) + expected);
+    safety_limit_ = static_cast<std::uint64_t>(std::min(limit, capacity));
+}
+
+// ---- LeafRefiner ---------------------------------------------------------------
+
+LeafRefiner::LeafRefiner(RefineRun& run, mesh::Pool& pool, RefineReport& report)
+    : run_(run),
+      settings_(run.settings()),
+      quality_(run.quality()),
+      pool_(pool),
+      mesh_(pool.mesh()),
+      report_(report) {}
+
+void LeafRefiner::classify(Leaf& leaf, TriangleId t) {
+    const mesh::Triangle& r = mesh_.triangle(t);
+    const Point& a = mesh_.point(r.v[0]);
+    const Point& b = mesh_.point(r.v[1]);
+    const Point& c = mesh_.point(r.v[2]);
+    const TriangleMeasures m = QualityTest::measure(a, b, c);
+    if (quality_.assess(mesh_, t, m) != Poorness::good) {
+        const QueuedTriangle q{t, r.generation};
+        // Poor triangles are routed by their circumcentre; the Steiner point
+        // itself is checked again before it is inserted.
+        if (leaf.owns(m.circle.centre))
+            leaf.push_poor(q, leaf.sigma(m.circle.radius_squared));
+        else
+            leaf.handed_off_triangles.push_back(q);
+    }
+    if ((r.flags & 7u) == 0) return;
+    const Point* corner[3] = {&a, &b, &c};
+    for (int k = 0; k < 3; ++k)
+        if (r.is_subsegment(k) &&
+            encroaches(*corner[mesh::next3(k)], *corner[mesh::prev3(k)], *corner[k]))
+            leaf.push_subsegment({EdgeRef(t, k), r.generation, false});
+}
+
+void LeafRefiner::classify_all(Leaf& leaf) {
+    mesh::for_each_triangle(mesh_, [&](TriangleId id, const mesh::Triangle&) { classify(leaf, id); });
+}
+
+void LeafRefiner::classify_created(Leaf& leaf) {
+    report_.triangles_created += buffer_.created.size();
+    for (TriangleId id : buffer_.created) classify(leaf, id);
+}
+
+bool LeafRefiner::may_split(EdgeRef e) const {
+    if (settings_.no_segment_splitting >= 2) return false;
+    if (settings_.no_segment_splitting == 1) return !mesh_.neighbour(e).is_none();
+    return true;
+}
+
+bool LeafRefiner::budget_left() {
+    if (report_.stopped != RefineReport::Stop::none) return false;
+    const std::uint64_t used = run_.steiner_used.load(std::memory_order_relaxed);
+    if (settings_.steiner_limit && used >= settings_.max_steiner) {
+        report_.stopped = RefineReport::Stop::steiner_limit;
+        return false;
+    }
+    if (used >= run_.safety_limit()) {
+        report_.stopped = RefineReport::Stop::safety_limit;
+        return false;
+    }
+    return true;
+}
+
+bool LeafRefiner::refine_leaf(Leaf& leaf) {
+    split_queued_subsegments(leaf);
+    if (report_.stopped != RefineReport::Stop::none) return false;
+    const int lowest = leaf.lowest_level();
+    if (lowest < 0) return true;
+    const int last = std::min(lowest + static_cast<int>(settings_.granularity), Leaf::bucket_count - 1);
+    for (int j = lowest; j <= last; ++j) {
+        QueuedTriangle q;
+        while (leaf.pop_poor(j, q)) {
+            const mesh::Triangle& r = mesh_.triangle(q.id);
+            if (!r.live() || r.generation != q.generation) continue;  // stale
+            if (report_.stopped != RefineReport::Stop::none) {
+                leaf.push_poor(q, j);
+                return false;
+            }
+            refine_triangle(leaf, q);
+            split_queued_subsegments(leaf);
+        }
+    }
+    return report_.stopped == RefineReport::Stop::none;
+}
+
+void LeafRefiner::split_queued_subsegments(Leaf& leaf) {
+    QueuedSubsegment s;
+    while (leaf.pop_subsegment(s)) {
+        const mesh::Triangle& r = mesh_.triangle(s.edge.triangle());
+        if (!r.live() || r.generation != s.generation) continue;  // stale: its new triangles were classified
+        const bool flagged = r.is_subsegment(s.edge.edge());
+        if (!flagged && !r.n[s.edge.edge()].is_none()) continue;
+        if (!s.forced && !subsegment_encroached(mesh_, s.edge)) continue;
+        if (!may_split(s.edge) || !budget_left()) continue;  // counted by the final pass
+        split_subsegment(leaf, s.edge);
+    }
+}
+
+bool LeafRefiner::split_subsegment(Leaf& leaf, EdgeRef e) {
+    const VertexId a = mesh_.origin(e), b = mesh_.destination(e);
+    const Point pa = mesh_.point(a), pb = mesh_.point(b);
+    const double length_squared = geometry::squared_distance(pa, pb);
+    const Point p = geometry::point_on_segment(pa, pb, split_parameter(mesh_, e));
+    if (length_squared < run_.tiny_length_squared() || p == pa || p == pb) return false;  // too short
+    if (!leaf.owns(p)) {
+        leaf.handed_off_subsegments.push_back({e, mesh_.triangle(e.triangle()).generation, true});
+        return false;
+    }
+    AreaBounds* bounds = settings_.criteria.triangle_max_area;
+    const EdgeRef across = mesh_.neighbour(e);
+    const double left_bound = bounds ? bounds->get(e.triangle()) : 0.0;
+    const double right_bound = bounds && !across.is_none() ? bounds->get(across.triangle()) : left_bound;
+
+    mesh::InsertResult result;
+    try {
+        result = mesh::split_subsegment(pool_, e, p, mesh::VertexKind::segment, buffer_);
+    } catch (const Error&) {
+        return false;  // degenerate surroundings: the mesh is unchanged, leave the subsegment
+    }
+    run_.steiner_used.fetch_add(1, std::memory_order_relaxed);
+    ++report_.steiner_points;
+    ++report_.segment_splits;
+    const Point pv = mesh_.point(result.vertex);
+    if (settings_.record_new_vertices) {
+        NewVertex nv;
+        nv.vertex = result.vertex;
+        nv.on_segment = true;
+        nv.from = a;
+        nv.to = b;
+        nv.t = ((pv.x - pa.x) * (pb.x - pa.x) + (pv.y - pa.y) * (pb.y - pa.y)) / length_squared;
+        report_.new_vertices.push_back(nv);
+    }
+    if (bounds) {
+        // e's triangle is on the left of a -> b; each new triangle takes the
+        // bound of the old one on its side.
+        for (TriangleId id : buffer_.created) {
+            const mesh::Triangle& t = mesh_.triangle(id);
+            const VertexId off = (t.v[0] != a && t.v[0] != b) ? t.v[0] : t.v[1];
+            bounds->set(id, geometry::orient2d(pa, pb, mesh_.point(off)) > 0 ? left_bound : right_bound);
+        }
+    }
+    classify_created(leaf);
+    return true;
+}
+
+void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q) {
+    const PoorTriangle t = describe_poor_triangle(mesh_, q.id, quality_);
+    if (t.shortest_length * t.shortest_length < run_.tiny_length_squared()) {
+        give_up(q, reason_precision);
+        return;
+    }
+    Point p;
+    if (t.disk.radius > 0) {
+        p = run_.strategy().place(t, scratch_);
+        if (settings_.checked && !in_selection_disk(t, p))
+            throw Error(std::string("refine: placement strategy '") + run_.strategy().name() +
+                        "' returned a point outside the selection disk");
+    } else {
+        p = t.circle.centre;  // the disk is empty: the circumcentre is the only choice
+    }
+    if (!finite(p)) {
+        give_up(q, reason_precision);
+        return;
+    }
+    if (!leaf.owns(p)) {
+        leaf.handed_off_triangles.push_back(q);
+        return;
+    }
+    auto requeue_if_alive = [&] {
+        const mesh::Triangle& r = mesh_.triangle(q.id);
+        if (r.live() && r.generation == q.generation)
+            leaf.push_poor(q, leaf.sigma(t.circle.radius_squared));
+    };
+    auto split_instead = [&](EdgeRef e) {
+        leaf.push_subsegment({e, mesh_.triangle(e.triangle()).generation, true});
+        split_queued_subsegments(leaf);
+        requeue_if_alive();
+    };
+
+    // Where p lies, seen from t without crossing subsegments.
+    const Walk walk = walk_to(mesh_, q.id, p, buffer_.random_state);
+    if (walk.kind == Walk::Kind::lost || walk.where.where == mesh::Location::on_vertex) {
+        give_up(q, reason_precision);
+        return;
+    }
+    if (walk.kind == Walk::Kind::blocked) {
+        if (!may_split(walk.blocking)) {
+            give_up(q, reason_no_split);
+            return;
+        }
+        split_instead(walk.blocking);
+        return;
+    }
+    const mesh::LocateResult where = walk.where;
+    if (where.where == mesh::Location::on_edge) {
+        const mesh::Triangle& r = mesh_.triangle(where.triangle);
+        if (r.is_subsegment(where.index) || r.n[where.index].is_none()) {
+            const EdgeRef e(where.triangle, where.index);
+            if (!may_split(e)) {
+                give_up(q, reason_no_split);
+                return;
+            }
+            split_instead(e);
+            return;
+        }
+    }
+
+    // The cavity of p (marks, cleared below): subsegments on its boundary
+    // that p encroaches, and the nearest vertex.
+    cavity_.clear();
+    blocking_.clear();
+    double nearest = std::numeric_limits<double>::infinity();
+    mesh_.triangle(where.triangle).flags |= mesh::Triangle::mark_bit;
+    cavity_.push_back(where.triangle);
+    for (std::size_t i = 0; i < cavity_.size(); ++i) {
+        const mesh::Triangle& r = mesh_.triangle(cavity_[i]);
+        for (int k = 0; k < 3; ++k) {
+            const Point& corner = mesh_.point(r.v[k]);
+            nearest = std::min(nearest, geometry::squared_distance(corner, p));
+            if (r.is_subsegment(k)) {
+                if (encroaches(mesh_.point(r.v[mesh::next3(k)]), mesh_.point(r.v[mesh::prev3(k)]), p))
+                    blocking_.push_back(EdgeRef(cavity_[i], k));
+                continue;
+            }
+            const EdgeRef across = r.n[k];
+            if (across.is_none()) continue;
+            mesh::Triangle& u = mesh_.triangle(across.triangle());
+            if (u.marked() || !mesh::in_circumcircle(mesh_, u, p)) continue;
+            u.flags |= mesh::Triangle::mark_bit;
+            cavity_.push_back(across.triangle());
+        }
+    }
+    for (TriangleId id : cavity_) mesh_.triangle(id).flags &= static_cast<std::uint8_t>(~mesh::Triangle::mark_bit);
+
+    if (!blocking_.empty()) {
+        bool any = false;
+        for (EdgeRef e : blocking_)
+            if (may_split(e)) {
+                leaf.push_subsegment({e, mesh_.triangle(e.triangle()).generation, true});
+                any = true;
+            }
+        if (!any) {
+            give_up(q, reason_no_split);
+            return;
+        }
+        split_queued_subsegments(leaf);
+        requeue_if_alive();
+        return;
+    }
+    if (nearest <= t.circle.radius_squared * (tiny_fraction * tiny_fraction)) {
+        give_up(q, reason_precision);
+        return;
+    }
+    if (!budget_left()) {
+        leaf.push_poor(q, leaf.sigma(t.circle.radius_squared));
+        return;
+    }
+
+    const mesh::Triangle& host = mesh_.triangle(where.triangle);
+    const std::array<VertexId, 3> host_corners{host.v[0], host.v[1], host.v[2]};
+    AreaBounds* bounds = settings_.criteria.triangle_max_area;
+    const double bound = bounds ? bounds->get(where.triangle) : 0.0;
+
+    const VertexId v = pool_.new_vertex(p, mesh::VertexKind::free);
+    const mesh::InsertResult result = mesh::insert_located(pool_, v, where, buffer_);
+    if (result.status != mesh::InsertStatus::inserted)
+        throw Error("refine: a located Steiner point was refused by insertion (vertex " +
+                    std::to_string(mesh::index(v)) + ")");
+    run_.steiner_used.fetch_add(1, std::memory_order_relaxed);
+    ++report_.steiner_points;
+    if (settings_.record_new_vertices) {
+        NewVertex nv;
+        nv.vertex = v;
+        nv.corners = host_corners;
+        report_.new_vertices.push_back(nv);
+    }
+    if (bounds)
+        for (TriangleId id : buffer_.created) bounds->set(id, bound);
+    classify_created(leaf);
+    requeue_if_alive();  // p's cavity missed t (only through rounding): try again
+}
+
+// ---- the sequential driver ---------------------------------------------------
+
+void refine_mesh(mesh::Mesh& mesh, const RefineSettings& settings, RefineReport& report) {
+    RefineRun run(mesh, settings);
+
+    // The leaf must satisfy the paper's relation (9): side > 4 r_max.
+    double r_max_squared = 0;
+    mesh::for_each_triangle(mesh, [&](TriangleId, const mesh::Triangle& t) {
+        const double r2 = geometry::circumradius_squared(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]));
+        if (std::isfinite(r2)) r_max_squared = std::max(r_max_squared, r2);
+    });
+    Leaf leaf(r_max_squared > 0 ? 4.0 * std::sqrt(r_max_squared) * (1.0 + 0x1p-20) : 1.0);
+
+    {
+        mesh::Pool pool(mesh);
+        LeafRefiner refiner(run, pool, report);
+        refiner.classify_all(leaf);
+        while (!leaf.idle())
+            if (!refiner.refine_leaf(leaf)) break;
+
+        // The final count of what is left poor, and why.
+        std::vector<LeafRefiner::GivenUp> given_up = refiner.given_up();
+        std::stable_sort(given_up.begin(), given_up.end(),
+                  [](const auto& x, const auto& y) { return mesh::index(x.id) < mesh::index(y.id); });
+        const QualityTest& quality = run.quality();
+        mesh::for_each_triangle(mesh, [&](TriangleId id, const mesh::Triangle& t) {
+            const TriangleMeasures m =
+                QualityTest::measure(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]));
+            bool protected_angle = false;
+            if (quality.assess(mesh, id, m, &protected_angle) == Poorness::good) {
+                report.left_small_input_angle += protected_angle ? 1 : 0;
+                return;
+            }
+            // The last give-up recorded for this very triangle.
+            auto it = std::upper_bound(given_up.begin(), given_up.end(), mesh::index(id),
+                                       [](std::uint32_t i, const auto& g) { return i < mesh::index(g.id); });
+            std::uint8_t reason = 0xFF;
+            while (it != given_up.begin()) {
+                --it;
+                if (it->id != id) break;
+                if (it->generation == t.generation) {
+                    reason = it->reason;
+                    break;
+                }
+            }
+            if (reason == reason_no_split)
+                ++report.left_no_split;
+            else if (reason == reason_precision)
+                ++report.left_precision;
+            else if (report.stopped != RefineReport::Stop::none)
+                ++report.left_budget;
+            else
+                ++report.left_other;
+        });
+        mesh::for_each_edge(mesh, [&](const mesh::EdgeView& e) {
+            if (e.subsegment && subsegment_encroached(mesh, e.edge)) ++report.encroached_left;
+        });
+    }
+}
+
+}  // namespace gpdr::refine

@@ -1,0 +1,208 @@
+#pragma once
+// Guaranteed-quality Delaunay refinement (Ruppert 1995, Shewchuk 1997/2002,
+// with Miller's largest-first order and the GPDR paper's selection disks).
+//
+// The loop of one leaf (refine_leaf, the paper's Fig. 4):
+//   0. Split every subsegment in the queue: encroached ones (a vertex
+//      strictly inside the diametral circle), re-tested when popped, and
+//      "forced" ones that a rejected Steiner point encroached or that stood
+//      between a poor triangle and its Steiner point.  Split points are
+//      midpoints or concentric-shell points (segments.hpp).  Every split's
+//      new triangles are classified, which queues any subsegment the new
+//      vertex encroaches, so this runs until no subsegment is encroached.
+//   1. For σ = i_min .. i_min + granularity, while PoorTriangles_σ is not
+//      empty: take t, p = f(t) from the placement strategy (the circumcentre
+//      when the selection disk is empty);
+//        - walk from t to p without crossing a subsegment; a subsegment (or
+//          hull edge) in the way is split instead (p lies outside the part
+//          of the domain t sees, or on the subsegment), and t re-queued if
+//          it survives;
+//        - search p's cavity; if p encroaches a subsegment on its boundary
+//          (Triangle's rule), p is not inserted: those subsegments are
+//          split instead (step 0), and t is re-queued if it survives;
+//        - otherwise p is inserted (Bowyer-Watson) and the new triangles
+//          are classified: poor ones queued at their σ, encroached
+//          subsegments queued.
+//      Step 0 runs after every poor triangle.
+//
+// Limits (Triangle's behaviour): -Y leaves boundary subsegments (one
+// triangle only) unsplit, -YY every subsegment; -S n stops after n Steiner
+// points.  A subsegment that may not be split is left, and a Steiner point
+// that would split it is not inserted: the triangle stays as it is and is
+// counted in the report.
+//
+// Termination.  Below about 20.7° (rho_bar >= sqrt 2) the selection disk
+// theory guarantees it, except near small input angles, where the
+// small-angle rule (segments.hpp) leaves the forced triangles alone; in
+// practice it ends up to about 33°.  Whatever the bound, refinement always
+// ends: a triangle whose shortest edge is below 2^-40 of the domain's
+// diameter, or whose Steiner point would land on (or within 2^-40 r of) an
+// existing vertex, is left and counted as "precision"; and a safety budget
+// of Steiner points derived from the input (RefineSettings::safety_limit)
+// stops the run with a valid mesh.  Either way the result is a valid
+// constrained Delaunay mesh and the report says what is left poor and why.
+//
+// Threads: a LeafRefiner belongs to one thread (it owns the Pool, the
+// InsertBuffer and all scratch); the settings, QualityTest and strategy are
+// shared read-only.  No globals: several threads may each run a LeafRefiner
+// on different leaves of the same mesh (the parallel layer guarantees that
+// their buffer zones are disjoint).  The subsegment side table is not
+// thread-safe (mesh/subsegments.hpp): the parallel layer must serialise
+// splits or give workers their own pending changes.
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <gpdr/options.hpp>
+
+#include "mesh/insert.hpp"
+#include "mesh/mesh.hpp"
+#include "mesh/pool.hpp"
+#include "refine/leaf.hpp"
+#include "refine/placement.hpp"
+#include "refine/quality.hpp"
+
+namespace gpdr::refine {
+
+struct RefineSettings {
+    QualityCriteria criteria;
+    // The placement: `strategy` if set (a user's), else the built-in `placement`.
+    Placement placement = Placement::off_centre;
+    const PlacementStrategy* strategy = nullptr;
+    int no_segment_splitting = 0;  // -Y: 1 (boundary subsegments), -YY: 2 (all)
+    bool steiner_limit = false;    // -S given
+    std::uint64_t max_steiner = 0; // -S<n>: what is left of the budget for this stage
+    // Safety net against non-termination (angle bounds above ~34°): at most
+    // this many Steiner points; 0 derives it from the input (see refine.cpp).
+    std::uint64_t safety_limit = 0;
+    // Verify every strategy's point is inside the selection disk (throws
+    // gpdr::Error naming the strategy if not).
+#ifdef NDEBUG
+    bool checked = false;
+#else
+    bool checked = true;
+#endif
+    // Record each new vertex (RefineReport::new_vertices) for attribute
+    // interpolation.
+    bool record_new_vertices = true;
+    // Input segment ends by SubsegmentInfo::segment, 2 per segment (optional;
+    // speeds up the small-angle rule, see segments.hpp).
+    std::span<const mesh::VertexId> segment_ends;
+    // Levels refined per refine_leaf call beyond i_min (Fig. 4's g).
+    unsigned granularity = 1;
+};
+
+// A vertex refinement added, with what the caller needs to interpolate its
+// attributes (Triangle: linearly, in the triangle or on the subsegment).
+struct NewVertex {
+    mesh::VertexId vertex = mesh::no_vertex;
+    bool on_segment = false;
+    // on_segment: the subsegment from -> to it split, at parameter t.
+    mesh::VertexId from = mesh::no_vertex, to = mesh::no_vertex;
+    double t = 0.5;
+    // otherwise: the corners of the triangle that contained it.
+    std::array<mesh::VertexId, 3> corners{mesh::no_vertex, mesh::no_vertex, mesh::no_vertex};
+};
+
+struct RefineReport {
+    enum class Stop : std::uint8_t { none, steiner_limit, safety_limit };
+
+    std::uint64_t steiner_points = 0;   // all vertices added
+    std::uint64_t segment_splits = 0;   // of those, on subsegments
+    std::uint64_t triangles_created = 0;
+    Stop stopped = Stop::none;
+
+    // Poor triangles left at the end (refine_mesh counts them in a final
+    // pass), by reason.  A triangle given up for several reasons is counted
+    // under the last.
+    std::uint64_t left_small_input_angle = 0;  // the small-angle rule protects it
+    std::uint64_t left_no_split = 0;    // its point would split a subsegment -Y/-YY protects
+    std::uint64_t left_precision = 0;   // too small for double precision, or no progress
+    std::uint64_t left_budget = 0;      // still queued when -S or the safety limit stopped it
+    std::uint64_t left_other = 0;       // poor for no recorded reason (a bug if non-zero)
+    // Encroached subsegments left unsplit (-Y/-YY, budget, too short).
+    std::uint64_t encroached_left = 0;
+
+    std::vector<NewVertex> new_vertices;  // if RefineSettings::record_new_vertices
+};
+
+// The shared, read-only part of a run (one per refinement, all threads).
+class RefineRun {
+public:
+    // `mesh` is read to derive the safety limit and the precision threshold.
+    RefineRun(const mesh::Mesh& mesh, const RefineSettings& settings);
+
+    const RefineSettings& settings() const { return settings_; }
+    const QualityTest& quality() const { return quality_; }
+    const PlacementStrategy& strategy() const { return *strategy_; }
+    double tiny_length_squared() const { return tiny_length_squared_; }
+    std::uint64_t safety_limit() const { return safety_limit_; }
+
+    // Steiner points added by all threads (for -S and the safety limit).
+    std::atomic<std::uint64_t> steiner_used{0};
+
+private:
+    RefineSettings settings_;
+    QualityTest quality_;
+    const PlacementStrategy* strategy_;
+    double tiny_length_squared_ = 0;
+    std::uint64_t safety_limit_ = 0;
+};
+
+// One thread's refiner: owns the pool, insertion buffer and scratch.
+class LeafRefiner {
+public:
+    LeafRefiner(RefineRun& run, mesh::Pool& pool, RefineReport& report);
+
+    // Assesses live triangle t and queues it in `leaf` if poor; queues its
+    // encroached subsegments.
+    void classify(Leaf& leaf, mesh::TriangleId t);
+    // classify() for every live triangle of the mesh (a fresh leaf that covers
+    // the whole mesh).
+    void classify_all(Leaf& leaf);
+    // Fig. 4 of the paper on `leaf`: step 0, then levels i_min .. i_min + g.
+    // Returns false when a limit stopped refinement (report().stopped).
+    bool refine_leaf(Leaf& leaf);
+    // Splits queued subsegments until none is left (step 0).
+    void split_queued_subsegments(Leaf& leaf);
+
+    // The triangles given up (id, generation, reason), for the final count.
+    struct GivenUp {
+        mesh::TriangleId id;
+        std::uint32_t generation;
+        std::uint8_t reason;  // 0 no_split, 1 precision
+    };
+    const std::vector<GivenUp>& given_up() const { return given_up_; }
+
+private:
+    void refine_triangle(Leaf& leaf, QueuedTriangle q);
+    bool split_subsegment(Leaf& leaf, mesh::EdgeRef e);
+    bool may_split(mesh::EdgeRef e) const;
+    bool budget_left();
+    void classify_created(Leaf& leaf);
+    void give_up(QueuedTriangle q, std::uint8_t reason) { given_up_.push_back({q.id, q.generation, reason}); }
+
+    RefineRun& run_;
+    const RefineSettings& settings_;
+    const QualityTest& quality_;
+    mesh::Pool& pool_;
+    mesh::Mesh& mesh_;
+    RefineReport& report_;
+    mesh::InsertBuffer buffer_;
+    PlacementScratch scratch_;
+    std::vector<mesh::TriangleId> cavity_;
+    std::vector<mesh::EdgeRef> blocking_;
+    std::vector<GivenUp> given_up_;
+};
+
+// The sequential refiner: one leaf that never splits, on the calling thread.
+// Requires a constrained Delaunay mesh without ghosts whose boundary edges
+// are subsegments (the CDT's output; a point set's Delaunay triangulation
+// with its hull edges flagged).  Throws gpdr::Error if a placement strategy
+// leaves the selection disk in checked mode, or the mesh is broken.
+void refine_mesh(mesh::Mesh& mesh, const RefineSettings& settings, RefineReport& report);
+
+}  // namespace gpdr::refine

@@ -1,0 +1,103 @@
+#pragma once
+// What refinement needs to know about subsegments around a vertex:
+//   - the edges of a vertex's star (rotation through neighbour links);
+//   - whether a subsegment is encroached: a point strictly inside its
+//     diametral circle (Ruppert 1995);
+//   - where to split it: the midpoint, or Ruppert's concentric shells (as in
+//     Shewchuk's Triangle) where the subsegment ends at an input vertex that
+//     another subsegment leaves at an acute angle: then the split point is
+//     at a power-of-two distance from that vertex, so splits on two
+//     segments meeting at a small angle fall on common circles and stop
+//     encroaching on each other;
+//   - the small-input-angle rule (Shewchuk, "Delaunay refinement algorithms
+//     for triangular mesh generation", 2002, as Triangle applies it): a
+//     skinny triangle is left alone when both ends of its shortest edge are
+//     segment vertices lying on two different segments that share an input
+//     vertex, at equal distance from it (within 0.1% in squared distance).
+//     Concentric-shell splitting puts them exactly there, and such a
+//     triangle's small angle is forced by the input angle.
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "geometry/point.hpp"
+#include "mesh/mesh.hpp"
+
+namespace gpdr::refine {
+
+// f(EdgeRef e) for every edge incident to v, once each; `t` is a live
+// triangle with corner v.  e is an edge of a triangle around v; its other
+// end is the vertex of e that is not v.  Rotation stops at boundary edges
+// (no neighbour) and goes round the other way from t.
+template <class F>
+void for_each_edge_at(const mesh::Mesh& mesh, mesh::TriangleId t, mesh::VertexId v, F&& f) {
+    using mesh::EdgeRef;
+    using mesh::next3;
+    using mesh::prev3;
+    // Counter-clockwise: each triangle reports its edge v -> next corner and
+    // moves across its edge previous corner -> v.
+    mesh::TriangleId cur = t;
+    for (int guard = 0; guard < (1 << 20); ++guard) {
+        const mesh::Triangle& r = mesh.triangle(cur);
+        const int i = r.corner_of(v);
+        f(EdgeRef(cur, prev3(i)));
+        const EdgeRef across = r.n[next3(i)];
+        if (across.is_none()) {
+            f(EdgeRef(cur, next3(i)));
+            break;
+        }
+        cur = across.triangle();
+        if (cur == t) return;
+    }
+    // Clockwise from t (only reached when a boundary stopped the rotation).
+    cur = t;
+    for (int guard = 0; guard < (1 << 20); ++guard) {
+        const mesh::Triangle& r = mesh.triangle(cur);
+        const EdgeRef across = r.n[prev3(r.corner_of(v))];
+        if (across.is_none()) return;
+        cur = across.triangle();
+        const mesh::Triangle& u = mesh.triangle(cur);
+        const int j = u.corner_of(v);
+        // u's edge next corner -> v is the one just crossed (reported);
+        // its edge v -> next corner is new.
+        f(EdgeRef(cur, prev3(j)));
+    }
+}
+
+// The end of edge e that is not v.
+inline mesh::VertexId other_end(const mesh::Mesh& mesh, mesh::EdgeRef e, mesh::VertexId v) {
+    const mesh::VertexId a = mesh.origin(e);
+    return a == v ? mesh.destination(e) : a;
+}
+
+// p strictly inside the circle with diameter ab: (a - p) . (b - p) < 0.
+inline bool encroaches(const geometry::Point& a, const geometry::Point& b, const geometry::Point& p) {
+    return (a.x - p.x) * (b.x - p.x) + (a.y - p.y) * (b.y - p.y) < 0;
+}
+
+// Whether subsegment e (a flagged edge) is encroached by the apex of either
+// of its triangles.  In a constrained Delaunay mesh that is the same as being
+// encroached by a vertex visible from it.
+bool subsegment_encroached(const mesh::Mesh& mesh, mesh::EdgeRef e);
+
+// Whether another subsegment leaves input vertex a at an angle below 90
+// degrees to subsegment a-b (e is an edge with end a, in a triangle around a).
+bool acute_corner(const mesh::Mesh& mesh, mesh::EdgeRef e, mesh::VertexId a, mesh::VertexId b);
+
+// Where to split subsegment e: the parameter along origin(e) -> destination(e)
+// (0.5, or a concentric-shell parameter as described above).
+double split_parameter(const mesh::Mesh& mesh, mesh::EdgeRef e);
+
+// Input segment ends by SubsegmentInfo::segment: 2 per segment (may be
+// empty; then segment ends are found by walking the subsegment chain).
+struct SegmentEnds {
+    std::span<const mesh::VertexId> ends;
+};
+
+// The small-input-angle rule above for triangle t whose shortest edge is
+// edge k.
+bool small_angle_protected(const mesh::Mesh& mesh, mesh::TriangleId t, int k, const SegmentEnds& segments);
+
+}  // namespace gpdr::refine

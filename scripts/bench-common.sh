@@ -30,11 +30,14 @@ bench_header() {
 ms() { awk -v k="$2 milliseconds:" 'index($0, k) { v = $NF } END { printf "%.3f", (v == "" ? 0 : v) / 1000 }' "$1"; }
 count() { awk -v k="$2" 'index($0, k) { v = $NF } END { print (v == "" ? "?" : v) }' "$1"; }
 
-# bench_run LABEL PROGRAM SWITCHES INPUT: runs in a scratch copy of the input's folder.
+# bench_run LABEL PROGRAM SWITCHES INPUT [ARG ...]: runs PROGRAM -VSWITCHES [ARG ...] INPUT
+# in the input's folder (so keep inputs in $BENCH_DIR: the outputs land beside
+# them).  The ARGs are extra arguments such as gpdr's --unsuitable LIB.so.
 bench_run() {
   local label=$1 program=$2 switches=$3 input=$4
+  shift 4
   local log="$BENCH_DIR/run.log" tlog="$BENCH_DIR/time.log"
-  ( cd "$(dirname "$input")" && /usr/bin/time -f "%e %M" -o "$tlog" "$program" "-V$switches" "$(basename "$input")" >"$log" 2>&1 ) || {
+  ( cd "$(dirname "$input")" && /usr/bin/time -f "%e %M" -o "$tlog" "$program" "-V$switches" "$@" "$(basename "$input")" >"$log" 2>&1 ) || {
     echo "| $(basename "$input") | $label | -$switches | failed: $(tail -1 "$log") |"; return; }
   local wall peak
   read -r wall peak <"$tlog"
@@ -44,3 +47,15 @@ bench_run() {
   pre=$(awk -v a="$dl" -v b="$seg" -v c="$hole" -v d="$tri_ms" 'BEGIN { printf "%.3f", a + b + c + d }')
   echo "| $(basename "$input") | $label | -$switches | $(count "$log" "Mesh vertices:") | $(count "$log" "Mesh triangles:") | $pre | $(ms "$log" "Quality") | $(ms "$log" "Output") | $wall | $((peak / 1024)) |"
 }
+
+# bench_input FILE: copies FILE into $BENCH_DIR (if not there yet) and prints
+# the copy's path, so that runs never write beside the repository's samples.
+bench_input() {
+  local copy
+  copy="$BENCH_DIR/$(basename "$1")"
+  cp -f "$1" "$copy"
+  echo "$copy"
+}
+
+# ele_count FILE: the triangle count in an .ele file's header.
+ele_count() { awk '{ sub(/#.*/, "") } NF { print $1; exit }' "$1"; }

@@ -17,6 +17,7 @@
 #include "command_line.hpp"
 #include "help_text.hpp"
 #include "report.hpp"
+#include "unsuitable.hpp"
 
 namespace {
 
@@ -29,8 +30,11 @@ int run(int argc, const char* const* argv) {
         case CommandLine::Action::version: fmt::print("{}", gpdr::app::version_text()); return 0;
         case CommandLine::Action::run: break;
     }
-    const gpdr::JobResult result =
-        gpdr::run_job(line.options, gpdr::app::printing_sink(line.options, stderr));
+    // &triunsuitable is null unless the user linked one in; the weak
+    // reference is taken here, in main's object (see unsuitable.hpp).
+    const gpdr::app::LoadedPlugins loaded = gpdr::app::load_plugins(line.options, &triunsuitable);
+    const gpdr::JobResult result = gpdr::run_job(
+        line.options, gpdr::app::printing_sink(line.options, stderr), loaded.plugins);
     return gpdr::app::report_result(line.options, result, stdout, stderr);
 }
 

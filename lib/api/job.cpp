@@ -15,6 +15,7 @@
 #include "api/job_stages.hpp"
 #include "mesh/checker.hpp"
 #include "mesh/traverse.hpp"
+#include "refine/refine.hpp"
 #include "triangulate/delaunay.hpp"
 
 namespace gpdr {
@@ -104,7 +105,7 @@ Input read_input(const Options& options, const FileNames& names, const WarningSi
 
 }  // namespace
 
-JobResult run_job(const Options& given, const WarningSink& warn) {
+JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugins& plugins) {
     Options options = given;
     apply_input_name(options);
     const FileNames names = file_names(options);
@@ -130,8 +131,22 @@ JobResult run_job(const Options& given, const WarningSink& warn) {
     }();
     points = {};
     warn_duplicates(report, input.node_file, input.nodes.base, warn);
-    if (options.convex_hull) make_hull_segments(mesh);
+    // Triangle treats the hull of a point set as segments: -c writes them
+    // to the .poly, and refinement keeps its Steiner points inside them.
+    const bool refining = api::wants_refinement(options);
+    if (options.convex_hull || refining) make_hull_segments(mesh);
     result.triangulate_seconds = clock.lap();
+
+    // Refine.
+    refine::RefineReport refined;
+    if (refining) {
+        const refine::RefineSettings settings =
+            api::refine_settings(options, plugins, input.poly ? &*input.poly : nullptr);
+        api::warn_before_refinement(options, warn);
+        refine::refine_mesh(mesh, settings, refined);
+        api::warn_after_refinement(refined, warn);
+    }
+    result.refine_seconds = clock.lap();
 
     if (options.check) {
         result.checked = true;
@@ -139,7 +154,8 @@ JobResult run_job(const Options& given, const WarningSink& warn) {
     }
 
     // Write.
-    api::MeshArrays arrays = api::mesh_to_arrays(mesh, std::move(input.nodes.data));
+    api::MeshArrays arrays = api::mesh_to_arrays(mesh, std::move(input.nodes.data), refined.new_vertices);
+    refined.new_vertices = {};
     const api::EdgeCounts edges = api::count_edges(arrays);
     result.vertices = arrays.nodes.size() - report.duplicates.size();
     result.triangles = arrays.triangles.size();
@@ -162,9 +178,10 @@ JobResult run_job(const Options& given, const WarningSink& warn) {
     std::vector<std::string> lines{
         fmt::format("Read milliseconds:  {}", ms(result.read_seconds)),
         fmt::format("Delaunay milliseconds:  {}", ms(result.triangulate_seconds)),
+        fmt::format("Quality milliseconds:  {}", ms(result.refine_seconds)),
         fmt::format("Output milliseconds:  {}", ms(result.write_seconds)),
-        fmt::format("Total running milliseconds:  {}",
-                    ms(result.read_seconds + result.triangulate_seconds + result.write_seconds)),
+        fmt::format("Total running milliseconds:  {}", ms(result.read_seconds + result.triangulate_seconds +
+                                                          result.refine_seconds + result.write_seconds)),
         "",
         "Statistics:",
         "",
@@ -175,7 +192,12 @@ JobResult run_job(const Options& given, const WarningSink& warn) {
         fmt::format("  Mesh edges: {}", result.edges),
         fmt::format("  Mesh exterior boundary edges: {}", result.hull_edges),
     };
-    if (options.convex_hull) lines.push_back(fmt::format("  Mesh subsegments (constrained edges): {}", result.segments));
+    if (options.convex_hull || refining)
+        lines.push_back(fmt::format("  Mesh subsegments (constrained edges): {}", result.segments));
+    if (refining) {
+        lines.push_back(fmt::format("  Steiner points added: {} ({} on segments)", refined.steiner_points,
+                                    refined.segment_splits));
+    }
     if (!result.statistics.empty()) lines.emplace_back();
     result.statistics.insert(result.statistics.begin(), lines.begin(), lines.end());
     return result;

@@ -2,6 +2,7 @@
 // The stages of one gpdr run (job.cpp strings them together): refuse what is
 // not implemented yet, turn the finished mesh into arrays, write the files.
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -9,8 +10,12 @@
 #include <gpdr/files.hpp>
 #include <gpdr/options.hpp>
 
+#include <gpdr/diagnostics.hpp>
+#include <gpdr/job.hpp>
+
 #include "api/mesh_arrays.hpp"
 #include "mesh/mesh.hpp"
+#include "refine/refine.hpp"
 
 namespace gpdr::api {
 
@@ -18,12 +23,22 @@ namespace gpdr::api {
 // delivers, so that no switch is ever silently ignored.
 void refuse_unimplemented(const Options& options);
 
+// Refinement: whether the switches ask for it, its settings (throws
+// UsageError for -u with no function), and warnings before and after.
+bool wants_refinement(const Options& options);
+refine::RefineSettings refine_settings(const Options& options, const JobPlugins& plugins, const PolyFile* poly);
+void warn_before_refinement(const Options& options, const WarningSink& warn);
+void warn_after_refinement(const refine::RefineReport& report, const WarningSink& warn);
+
 // The finished mesh as arrays.  `nodes` are the input vertices (ids 0..n-1 of
-// the mesh; attributes and markers kept); vertices the mesh added after them
-// are appended.  Vertex markers follow Triangle: a non-zero input marker is
+// the mesh; attributes and markers kept); the vertices the mesh added after
+// them follow in id order, skipping ids claimed but never used, with their
+// attributes interpolated from `added` (refinement's record of each new
+// vertex: on a subsegment, or in a triangle).  Vertex markers follow Triangle: a non-zero input marker is
 // kept, otherwise a vertex on a subsegment takes its marker, otherwise a
 // vertex on the boundary gets 1 and any other 0.
-MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes);
+MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes,
+                          std::span<const refine::NewVertex> added = {});
 
 // The marker of mesh edge {a, b} (Triangle's rules): a subsegment's own
 // marker if non-zero, else 1 on the boundary, else 0.

@@ -18,6 +18,11 @@ struct MeshArrays {
     NodeSet nodes;            // every vertex of the output (input vertices first)
     EleSet triangles;         // 3 corners each, counter-clockwise
     NeighbourSet neighbours;  // neighbour k opposite corner k, none on the boundary
+    // For each node, the mesh vertex id it came from (the mesh may number
+    // differently: ids claimed but never used are skipped).  Kept in step by
+    // jettison_unused_vertices(); make_second_order() leaves the new midpoint
+    // nodes out (they have no mesh vertex).
+    std::vector<std::uint32_t> mesh_ids;
 };
 
 // The marker of the edge joining vertices a and b: the caller knows which

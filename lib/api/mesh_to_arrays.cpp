@@ -1,6 +1,8 @@
-// From the live mesh to the arrays Triangle's files hold: triangles numbered
-// in id order with dead slots skipped, neighbours renumbered to match, and
-// vertex markers by Triangle's rules.
+// From the live mesh to the arrays Triangle's files hold: vertices numbered
+// input first then the added ones in id order (skipping ids claimed but never
+// used), triangles in id order with dead slots skipped, neighbours
+// renumbered to match, vertex attributes interpolated and markers set by
+// Triangle's rules.
 
 #include "api/job_stages.hpp"
 #include "mesh/traverse.hpp"
@@ -15,36 +17,80 @@ EdgeMarker edge_markers(const mesh::Mesh& mesh) {
     };
 }
 
-MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes) {
-    MeshArrays out;
-    const std::uint32_t slots = mesh.triangle_end();
+namespace {
 
-    // Compact triangle numbers, in id order.
-    std::vector<std::uint32_t> number(slots, NeighbourSet::none);
-    std::uint32_t count = 0;
-    mesh::for_each_triangle(mesh, [&](mesh::TriangleId id, const mesh::Triangle&) { number[index(id)] = count++; });
+constexpr std::uint32_t none = NeighbourSet::none;
 
-    out.triangles.corners_per_triangle = 3;
-    out.triangles.corners.reserve(3 * std::size_t{count});
-    out.neighbours.neighbours.reserve(3 * std::size_t{count});
-    mesh::for_each_triangle(mesh, [&](mesh::TriangleId, const mesh::Triangle& t) {
-        for (int k = 0; k < 3; ++k) {
-            out.triangles.corners.push_back(index(t.v[k]));
-            out.neighbours.neighbours.push_back(t.n[k].is_none() ? NeighbourSet::none
-                                                                 : number[index(t.n[k].triangle())]);
+// Attributes of the added vertices: Triangle interpolates linearly, on the
+// subsegment a new vertex splits or in the triangle that contained it.
+void interpolate_attributes(const mesh::Mesh& mesh, NodeSet& nodes, const std::vector<std::uint32_t>& number,
+                            std::span<const refine::NewVertex> added) {
+    const std::uint32_t na = nodes.attribute_count;
+    if (na == 0) return;
+    auto attribute = [&](mesh::VertexId v, std::uint32_t i) {
+        return nodes.attributes[std::size_t{number[index(v)]} * na + i];
+    };
+    for (const refine::NewVertex& n : added) {
+        const std::size_t row = std::size_t{number[index(n.vertex)]} * na;
+        if (n.on_segment) {
+            for (std::uint32_t i = 0; i < na; ++i)
+                nodes.attributes[row + i] = (1 - n.t) * attribute(n.from, i) + n.t * attribute(n.to, i);
+            continue;
         }
-    });
+        // Barycentric weights of the new vertex in the triangle that held it.
+        const auto& p = mesh.point(n.vertex);
+        const auto& a = mesh.point(n.corners[0]);
+        const auto& b = mesh.point(n.corners[1]);
+        const auto& c = mesh.point(n.corners[2]);
+        const double det = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+        const double wb = ((p.x - a.x) * (c.y - a.y) - (c.x - a.x) * (p.y - a.y)) / det;
+        const double wc = ((b.x - a.x) * (p.y - a.y) - (p.x - a.x) * (b.y - a.y)) / det;
+        for (std::uint32_t i = 0; i < na; ++i)
+            nodes.attributes[row + i] = (1 - wb - wc) * attribute(n.corners[0], i) +
+                                        wb * attribute(n.corners[1], i) + wc * attribute(n.corners[2], i);
+    }
+}
 
-    // Vertices the mesh added after the input ones (Steiner points) follow
-    // them; their attributes are filled by whoever created them (later).
+}  // namespace
+
+MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::span<const refine::NewVertex> added) {
+    MeshArrays out;
+
+    // Vertex numbers: the input vertices keep theirs (duplicates included,
+    // as Triangle writes them); added vertices follow.
     const std::size_t input_count = nodes.size();
-    const std::uint32_t end = mesh.vertex_end();
-    for (std::uint32_t v = static_cast<std::uint32_t>(input_count); v < end; ++v) {
+    const std::uint32_t vertex_end = mesh.vertex_end();
+    std::vector<std::uint32_t> number(std::max<std::size_t>(vertex_end, input_count), none);
+    out.mesh_ids.reserve(number.size());
+    for (std::uint32_t v = 0; v < input_count; ++v) {
+        number[v] = v;
+        out.mesh_ids.push_back(v);
+    }
+    for (std::uint32_t v = static_cast<std::uint32_t>(input_count); v < vertex_end; ++v) {
+        if (mesh.kind(mesh::VertexId{v}) == mesh::VertexKind::unused) continue;
+        number[v] = static_cast<std::uint32_t>(out.mesh_ids.size());
+        out.mesh_ids.push_back(v);
         const auto& p = mesh.point(mesh::VertexId{v});
         nodes.xy.push_back(p.x);
         nodes.xy.push_back(p.y);
     }
     nodes.attributes.resize(nodes.size() * nodes.attribute_count, 0.0);
+    interpolate_attributes(mesh, nodes, number, added);
+
+    // Triangles, compactly numbered in id order.
+    const std::uint32_t slots = mesh.triangle_end();
+    std::vector<std::uint32_t> triangle_number(slots, none);
+    std::uint32_t count = 0;
+    mesh::for_each_triangle(mesh, [&](mesh::TriangleId id, const mesh::Triangle&) { triangle_number[index(id)] = count++; });
+    out.triangles.corners_per_triangle = 3;
+    out.triangles.corners.reserve(3 * std::size_t{count});
+    out.neighbours.neighbours.reserve(3 * std::size_t{count});
+    mesh::for_each_triangle(mesh, [&](mesh::TriangleId, const mesh::Triangle& t) {
+        for (int k = 0; k < 3; ++k) {
+            out.triangles.corners.push_back(number[index(t.v[k])]);
+            out.neighbours.neighbours.push_back(t.n[k].is_none() ? none : triangle_number[index(t.n[k].triangle())]);
+        }
+    });
 
     // Markers: keep non-zero input markers; otherwise a subsegment's marker,
     // then 1 for any boundary vertex.
@@ -52,14 +98,14 @@ MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes) {
     std::vector<bool> fixed(nodes.size());
     for (std::size_t v = 0; v < nodes.size(); ++v) fixed[v] = nodes.markers[v] != 0;
     mesh.subsegments().for_each([&](mesh::VertexId a, mesh::VertexId b, const mesh::SubsegmentInfo& s) {
-        for (const auto v : {index(a), index(b)})
+        for (const auto v : {number[index(a)], number[index(b)]})
             if (!fixed[v] && s.marker != 0) {
                 nodes.markers[v] = s.marker;
                 fixed[v] = true;
             }
     });
     mesh::for_each_hull_edge(mesh, [&](const mesh::EdgeView& e) {
-        for (const auto v : {index(e.from), index(e.to)})
+        for (const auto v : {number[index(e.from)], number[index(e.to)]})
             if (!fixed[v]) nodes.markers[v] = 1;
     });
     out.nodes = std::move(nodes);

@@ -14,17 +14,11 @@ void refuse_unimplemented(const Options& o) {
     };
     if (o.refine) refuse("-r (refining an existing mesh)");
     if (o.poly) refuse("-p (constrained Delaunay triangulation of a .poly file)");
-    if (o.quality) refuse("-q (quality mesh refinement)");
-    if (o.area_limit || o.regional_area) refuse("-a (area constraints)");
-    if (o.user_test) refuse("-u (triunsuitable() area test)");
-    if (!o.unsuitable_library.empty()) refuse("--unsuitable (loading triunsuitable() from a shared object)");
-    // The switches below only change PSLG meshing or refinement, which the
-    // checks above already refuse; without -p, -r or -q Triangle accepts them
-    // and they have no effect on a point set, and so it is here:
-    //   -A (needs -p), -O (holes come from .poly), -D, -Y, -S, -s (segments
-    //   are split only when refining or conforming a PSLG), -jN, -gN, -PN and
-    //   --threads, --granularity, --placement (refinement settings).
-    // -D on a point set: the Delaunay triangulation is already conforming.
+    if (o.threads > 1 && wants_refinement(o)) refuse("-jN with N > 1 (parallel refinement)");
+    // On a point set without -p or -r, as in Triangle: -A and -O do nothing
+    // (regions and holes come from a .poly); -D does nothing (a Delaunay
+    // triangulation already conforms); -Y, -S, -s, -gN and -PN matter only
+    // when refining, and refinement takes them.
 }
 
 }  // namespace gpdr::api

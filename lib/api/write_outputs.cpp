@@ -10,14 +10,15 @@
 namespace gpdr::api {
 namespace {
 
-// The subsegments of the mesh as .poly segments, in the arrays' numbering.
-SegmentSet subsegments_of(const mesh::Mesh& mesh, const std::vector<std::uint32_t>& renumber,
+// The subsegments of the mesh as .poly segments, in the arrays' numbering
+// (`number`: mesh vertex id -> node index).
+SegmentSet subsegments_of(const mesh::Mesh& mesh, const std::vector<std::uint32_t>& number,
                           const EdgeMarker& marker) {
     SegmentSet segments;
     mesh::for_each_edge(mesh, [&](const mesh::EdgeView& e) {
         if (!e.subsegment) return;
-        segments.endpoints.push_back(renumber[index(e.from)]);
-        segments.endpoints.push_back(renumber[index(e.to)]);
+        segments.endpoints.push_back(number[index(e.from)]);
+        segments.endpoints.push_back(number[index(e.to)]);
         segments.markers.push_back(marker(index(e.from), index(e.to), e.hull));
     });
     return segments;
@@ -32,13 +33,11 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
     const io::WriteFormat format{request.base, !o.no_boundary_markers,
                                  o.command.empty() ? std::string("gpdr") : o.command};
 
-    // Mesh vertex ids -> output numbers (identity unless -j drops some).
-    std::vector<std::uint32_t> renumber(arrays.nodes.size());
-    for (std::uint32_t v = 0; v < renumber.size(); ++v) renumber[v] = v;
-    if (o.jettison) renumber = jettison_unused_vertices(arrays);
-    std::vector<std::uint32_t> mesh_id(arrays.nodes.size());
-    for (std::uint32_t v = 0; v < renumber.size(); ++v)
-        if (renumber[v] != NeighbourSet::none) mesh_id[renumber[v]] = v;
+    if (o.jettison) jettison_unused_vertices(arrays);
+    // Mesh vertex ids <-> node indices (arrays.mesh_ids is node -> mesh id).
+    const std::vector<std::uint32_t> mesh_id = arrays.mesh_ids;
+    std::vector<std::uint32_t> number(mesh.vertex_end(), NeighbourSet::none);
+    for (std::uint32_t v = 0; v < mesh_id.size(); ++v) number[mesh_id[v]] = v;
 
     // Edge markers are known by mesh vertex ids; the arrays may be renumbered.
     const EdgeMarker mesh_marker = edge_markers(mesh);
@@ -64,7 +63,7 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
         poly.nodes.attribute_count = arrays.nodes.attribute_count;
         // write_poly() takes the header's marker column from nodes.markers.
         if (arrays.nodes.has_markers()) poly.nodes.markers.assign(1, 0);
-        poly.segments = subsegments_of(mesh, renumber, mesh_marker);
+        poly.segments = subsegments_of(mesh, number, mesh_marker);
         if (request.poly) {
             poly.holes = request.poly->holes;
             poly.regions = request.poly->regions;

@@ -28,7 +28,7 @@ Disk selection_disk(const Point& a, const Point& b, const Point& c) {
 // hence acute.  So c' = m + k n with n = pq rotated a quarter turn towards r
 // (|n| = L) and k = rho + sqrt(rho^2 - 1/4), and everything is computed
 // relative to p.
-Point off_centre(const Point& a, const Point& b, const Point& c, double rho_bar) {
+Point off_centre(const Point& a, const Point& b, const Point& c, double rho_bar, double fraction) {
     const int edge = shortest_edge(a, b, c).edge;
     // p, q, r in the cyclic order of a, b, c, so orient2d(p, q, r) has the
     // triangle's orientation.
@@ -50,7 +50,7 @@ Point off_centre(const Point& a, const Point& b, const Point& c, double rho_bar)
     const double vx = ux - 0.5 * qx;
     const double vy = uy - 0.5 * qy;
 
-    const double k = rho_bar + std::sqrt(rho_bar * rho_bar - 0.25);
+    const double k = fraction * (rho_bar + std::sqrt(rho_bar * rho_bar - 0.25));
     // |v|^2 <= h^2 = k^2 L^2: the circumcentre is no farther than c'.
     if (vx * vx + vy * vy <= k * k * q2) return {p.x + ux, p.y + uy};
     // n: pq turned by +90 degrees when pqr is counter-clockwise, -90 if not.

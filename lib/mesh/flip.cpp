@@ -41,10 +41,10 @@ EdgeRef flip(Mesh& mesh, EdgeRef e) {
     const std::uint8_t keep = Triangle::live_bit;
     t.v[0] = a, t.v[1] = b, t.v[2] = d;
     t.flags = keep;
-    ++t.generation;
+    t.bump_generation();
     u.v[0] = d, u.v[1] = c, u.v[2] = a;
     u.flags = keep;
-    ++u.generation;
+    u.bump_generation();
 
     // t: edge 0 = b-d, edge 1 = d-a (diagonal), edge 2 = a-b.
     mesh.link(EdgeRef(tid, 0), n_bd);

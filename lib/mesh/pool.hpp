@@ -60,7 +60,7 @@ public:
         Triangle& r = mesh_->triangle(t);
         if (!r.live()) [[unlikely]]
             destroyed_twice(t);
-        ++r.generation;
+        r.bump_generation();
         r.flags = 0;
         r.n[0] = EdgeRef::from_bits(spare_.free_head);
         spare_.free_head = index(t);

@@ -5,11 +5,19 @@
 // triangle record; markers and sources are needed rarely (splitting a
 // subsegment, writing files), so they live here.
 //
-// Not thread-safe for writers: the parallel refiner must give each worker its
-// own pending changes or a lock around set()/erase() (decided in parallel/).
+// Thread safety: the table is split into shards by vertex pair, each with
+// its own lock, so parallel refinement workers (parallel/) may call find(),
+// set() and erase() at once without a global lock.  A pointer find() returns
+// stays valid while other threads add or remove OTHER entries (the shards
+// are node-based maps); the parallel layer guarantees that an entry is only
+// changed by the worker whose buffer zone holds the subsegment.  size(),
+// clear(), reserve() and for_each() are for single-threaded use.
 
 #include <cstddef>
+#include <array>
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <unordered_map>
 #include <utility>
 
@@ -28,35 +36,76 @@ struct SubsegmentInfo {
 
 class SubsegmentTable {
 public:
+    SubsegmentTable() : shards_(std::make_unique<Shard[]>(shard_count)) {}
+
     // Adds or replaces the entry of edge {a, b} (either order).
-    void set(VertexId a, VertexId b, SubsegmentInfo info) { map_[key(a, b)] = info; }
+    void set(VertexId a, VertexId b, SubsegmentInfo info) {
+        if (!shards_) shards_ = std::make_unique<Shard[]>(shard_count);  // a moved-from table
+        const std::uint64_t k = key(a, b);
+        Shard& s = shard(k);
+        std::lock_guard lock(s.mutex);
+        s.map[k] = info;
+    }
     // The entry of edge {a, b}, or nullptr.
     const SubsegmentInfo* find(VertexId a, VertexId b) const {
-        auto it = map_.find(key(a, b));
-        return it == map_.end() ? nullptr : &it->second;
+        if (!shards_) return nullptr;
+        const std::uint64_t k = key(a, b);
+        Shard& s = shard(k);
+        std::lock_guard lock(s.mutex);
+        auto it = s.map.find(k);
+        return it == s.map.end() ? nullptr : &it->second;
     }
     // Removes edge {a, b}; false if it was not there.
-    bool erase(VertexId a, VertexId b) { return map_.erase(key(a, b)) != 0; }
-    std::size_t size() const { return map_.size(); }
-    void clear() { map_.clear(); }
-    void reserve(std::size_t n) { map_.reserve(n); }
+    bool erase(VertexId a, VertexId b) {
+        if (!shards_) return false;
+        const std::uint64_t k = key(a, b);
+        Shard& s = shard(k);
+        std::lock_guard lock(s.mutex);
+        return s.map.erase(k) != 0;
+    }
+    std::size_t size() const {
+        std::size_t n = 0;
+        if (!shards_) return 0;
+        for (std::size_t i = 0; i < shard_count; ++i) n += shards_[i].map.size();
+        return n;
+    }
+    void clear() {
+        if (!shards_) return;
+        for (std::size_t i = 0; i < shard_count; ++i) shards_[i].map.clear();
+    }
+    void reserve(std::size_t n) {
+        if (!shards_) shards_ = std::make_unique<Shard[]>(shard_count);
+        for (std::size_t i = 0; i < shard_count; ++i) shards_[i].map.reserve(n / shard_count + 1);
+    }
 
     // f(VertexId low, VertexId high, const SubsegmentInfo&) for every entry,
     // in no particular order.
     template <class F>
     void for_each(F&& f) const {
-        for (const auto& [k, info] : map_)
-            f(VertexId{static_cast<std::uint32_t>(k >> 32)}, VertexId{static_cast<std::uint32_t>(k)}, info);
+        if (!shards_) return;
+        for (std::size_t i = 0; i < shard_count; ++i)
+            for (const auto& [k, info] : shards_[i].map)
+                f(VertexId{static_cast<std::uint32_t>(k >> 32)}, VertexId{static_cast<std::uint32_t>(k)}, info);
     }
 
 private:
+    static constexpr std::size_t shard_count = 64;
+    struct Shard {
+        mutable std::mutex mutex;
+        std::unordered_map<std::uint64_t, SubsegmentInfo> map;
+    };
+
     static std::uint64_t key(VertexId a, VertexId b) {
         std::uint64_t lo = index(a), hi = index(b);
         if (lo > hi) std::swap(lo, hi);
         return (lo << 32) | hi;
     }
+    Shard& shard(std::uint64_t k) const {
+        // Mix both ids so neighbouring pairs spread over the shards.
+        return shards_[((k * 0x9E3779B97F4A7C15ull) >> 58) & (shard_count - 1)];
+    }
 
-    std::unordered_map<std::uint64_t, SubsegmentInfo> map_;
+    std::unique_ptr<Shard[]> shards_;
 };
 
 }  // namespace gpdr::mesh

@@ -15,6 +15,7 @@
 // n[k] names the neighbour triangle AND the index of the shared edge in it,
 // so the neighbour's link back is n[k].triangle()'s n[n[k].edge()].
 
+#include <atomic>
 #include <cstdint>
 
 #include "mesh/ids.hpp"
@@ -42,6 +43,18 @@ struct Triangle {
     std::uint8_t spare;
 
     bool live() const { return (flags & live_bit) != 0; }
+    // The generation, read and bumped as a relaxed atomic (a plain move on
+    // the usual targets): a parallel worker checks a queue entry for
+    // staleness while another thread may be reusing the slot
+    // (parallel/scheduler.hpp).  An entry is live exactly when the slot's
+    // generation still equals the entry's; nothing else of a slot that may
+    // be someone else's is read before that check.
+    std::uint32_t load_generation() const {
+        return std::atomic_ref<std::uint32_t>(const_cast<std::uint32_t&>(generation)).load(std::memory_order_relaxed);
+    }
+    void bump_generation() {
+        std::atomic_ref<std::uint32_t>(generation).store(generation + 1, std::memory_order_relaxed);
+    }
     bool marked() const { return (flags & mark_bit) != 0; }
     bool is_subsegment(int k) const { return (flags >> k) & 1u; }
     void set_subsegment(int k, bool on) {

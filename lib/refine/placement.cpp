@@ -31,8 +31,24 @@ PoorTriangle describe_poor_triangle(const mesh::Mesh& mesh, mesh::TriangleId id,
 Point CircumcentrePlacement::place(const PoorTriangle& t, PlacementScratch&) const { return t.circle.centre; }
 
 Point OffCentrePlacement::place(const PoorTriangle& t, PlacementScratch&) const {
+    // 5% short of Üngör's exact off-centre (as Triangle does): the exact
+    // point makes a new triangle with ratio exactly rho_bar, which rounding
+    // may leave just poor, costing another Steiner point.  Where the shorter
+    // point leaves the selection disk, the exact one (inside it for
+    // rho_bar >= sqrt 2) is used.
+    const Point near = geometry::off_centre(t.corner[0], t.corner[1], t.corner[2], t.rho_bar, off_centre_fraction);
+    if (admissible_point(t, near)) return near;
     const Point p = geometry::off_centre(t.corner[0], t.corner[1], t.corner[2], t.rho_bar);
-    return in_selection_disk(t, p) ? p : t.circle.centre;
+    if (admissible_point(t, p)) return p;
+    // A non-empty disk that the off-centre misses (rho_bar < sqrt 2 and a
+    // very skinny triangle): the off-centre lies on the ray from the
+    // circumcentre towards the shortest edge, beyond the disk; take the
+    // disk's point on that ray nearest to it.
+    const double dx = p.x - t.circle.centre.x, dy = p.y - t.circle.centre.y;
+    const double d = std::sqrt(dx * dx + dy * dy);
+    if (!(d > 0) || !(t.disk.radius > 0)) return t.circle.centre;
+    const double s = 0.99 * t.disk.radius / d;
+    return {t.circle.centre.x + s * dx, t.circle.centre.y + s * dy};
 }
 
 int OptimisationPlacement::cavity_penalty(const PoorTriangle& t, const Point& p, PlacementScratch& scratch) {
@@ -80,15 +96,17 @@ int OptimisationPlacement::cavity_penalty(const PoorTriangle& t, const Point& p,
 
 Point OptimisationPlacement::place(const PoorTriangle& t, PlacementScratch& scratch) const {
     scratch.scores.clear();
-    const Point off = geometry::off_centre(t.corner[0], t.corner[1], t.corner[2], t.rho_bar);
-    Point best = t.circle.centre;
-    int best_score = 0;
-    bool have = false;
-    if (in_selection_disk(t, off)) {
-        best = off;
-        best_score = cavity_penalty(t, off, scratch);
-        have = true;
-    }
+    // Γ runs through the point the off-centre strategy aims at (5% short of
+    // Üngör's, see OffCentrePlacement::place): every point of it makes the
+    // new triangle on the shortest edge a little better than the bound,
+    // rather than exactly at it, where rounding would leave it poor.
+    const Point off = geometry::off_centre(t.corner[0], t.corner[1], t.corner[2], t.rho_bar,
+                                           OffCentrePlacement::off_centre_fraction);
+    // Start from the off-centre strategy's point (admissible, and what ties
+    // go to); the arc can only improve on it.
+    static const OffCentrePlacement off_centre_strategy;
+    Point best = off_centre_strategy.place(t, scratch);
+    int best_score = cavity_penalty(t, best, scratch);
 
     // Γ: the circle through the shortest edge's ends and the off-centre.
     const Point& p = t.corner[mesh::next3(t.shortest_edge)];
@@ -112,15 +130,14 @@ Point OptimisationPlacement::place(const PoorTriangle& t, PlacementScratch& scra
                 const Point c{gamma.centre.x + rg * std::cos(phi), gamma.centre.y + rg * std::sin(phi)};
                 if (!in_selection_disk(t, c)) continue;
                 const int score = cavity_penalty(t, c, scratch);
-                if (!have || score < best_score) {
+                if (score < best_score) {
                     best = c;
                     best_score = score;
-                    have = true;
                 }
             }
         }
     }
-    return have ? best : t.circle.centre;
+    return best;
 }
 
 const PlacementStrategy& builtin_placement(Placement kind) {

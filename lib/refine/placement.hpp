@@ -86,6 +86,10 @@ public:
 
 class OffCentrePlacement final : public PlacementStrategy {
 public:
+    // The fraction of the exact off-centre's distance from the shortest edge
+    // at which the point is placed (see place()).
+    static constexpr double off_centre_fraction = 0.95;
+
     geometry::Point place(const PoorTriangle& t, PlacementScratch& scratch) const override;
     const char* name() const override { return "off-centre"; }
 };
@@ -110,6 +114,19 @@ const PlacementStrategy& builtin_placement(Placement kind);
 // Whether p is strictly inside t.disk.
 inline bool in_selection_disk(const PoorTriangle& t, const geometry::Point& p) {
     return t.disk.radius > 0 && geometry::squared_distance(p, t.disk.centre) < t.disk.radius * t.disk.radius;
+}
+
+// Where a strategy's point may go.  When the selection disk is not empty, in
+// it (the paper's Definition 1: termination and size optimality follow for
+// rho_bar >= sqrt 2).  When it is empty -- a triangle poor by its size
+// rather than its shape (r < sqrt 2 l), or any angle bound above 20.7
+// degrees, where rho_bar < sqrt 2 and the theory gives no guarantee -- the
+// point must still destroy t: strictly inside its circumcircle.  There the
+// off-centre is what Triangle uses, and refinement's own guards ensure it
+// ends (refine.hpp).
+inline bool admissible_point(const PoorTriangle& t, const geometry::Point& p) {
+    if (t.disk.radius > 0) return in_selection_disk(t, p);
+    return geometry::squared_distance(p, t.circle.centre) < t.circle.radius_squared;
 }
 
 // Fills a PoorTriangle for live triangle id (corners, circle, shortest edge,

@@ -45,6 +45,9 @@ struct QualityCriteria {
     // see area_bounds.hpp for how new triangles inherit).  nullptr: none.
     AreaBounds* triangle_max_area = nullptr;
     UserTest user_test = nullptr;  // -u
+    // Encroachment by diametral circles instead of lenses (-D: every
+    // subsegment must end up Delaunay).
+    bool diametral_circles = false;
 };
 
 // Why a triangle is poor (several may hold; the first in test order is kept).
@@ -67,6 +70,9 @@ public:
     // rho_bar = 1 / (2 sin theta); +infinity when there is no angle test.
     double rho_bar() const { return rho_bar_; }
     bool has_angle_test() const { return angle_test_; }
+    // The `lens` argument of encroaches() (segments.hpp): cos(2 theta) for
+    // diametral lenses, 0 for diametral circles.
+    double encroachment_lens() const { return lens_; }
     bool has_area_test() const { return area_test_; }
 
     static TriangleMeasures measure(const geometry::Point& a, const geometry::Point& b, const geometry::Point& c);
@@ -77,6 +83,15 @@ public:
     Poorness assess(const mesh::Mesh& mesh, mesh::TriangleId t, const TriangleMeasures& m,
                     bool* protected_angle = nullptr) const;
 
+    // Where a poor triangle goes within its σ level (leaf.hpp): 0 for the
+    // worst shapes up to Leaf::rank_count - 1 for triangles as good as the
+    // bound (or poor only by size), by rho_bar^2 l^2 / r^2 = sin^2 of the
+    // smallest angle over sin^2 of the bound.
+    int shape_rank(double shortest_squared, double radius_squared, int rank_count) const {
+        if (!angle_test_) return 0;
+        const double x = rho_bar_squared_ * shortest_squared / radius_squared;
+        return x >= 1.0 ? rank_count - 1 : static_cast<int>(x * (rank_count - 1));
+    }
     // Only the shape: r^2 > rho_bar^2 l^2.
     bool bad_shape(const TriangleMeasures& m) const {
         return angle_test_ && m.circle.radius_squared > rho_bar_squared_ * m.shortest.length_squared;
@@ -88,6 +103,7 @@ private:
     double rho_bar_ = 0;
     double rho_bar_squared_ = 0;
     bool angle_test_ = false;
+    double lens_ = 0.0;
     bool area_test_ = false;
 };
 

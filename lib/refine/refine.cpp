@@ -156,7 +156,8 @@ void LeafRefiner::classify(Leaf& leaf, TriangleId t) {
         // Poor triangles are routed by their circumcentre; the Steiner point
         // itself is checked again before it is inserted.
         if (leaf.owns(m.circle.centre))
-            leaf.push_poor(q, leaf.sigma(m.circle.radius_squared));
+            leaf.push_poor(q, leaf.sigma(m.circle.radius_squared),
+                           quality_.shape_rank(m.shortest.length_squared, m.circle.radius_squared, Leaf::rank_count));
         else
             leaf.handed_off_triangles.push_back(q);
     }
@@ -164,7 +165,7 @@ void LeafRefiner::classify(Leaf& leaf, TriangleId t) {
     const Point* corner[3] = {&a, &b, &c};
     for (int k = 0; k < 3; ++k)
         if (r.is_subsegment(k) &&
-            encroaches(*corner[mesh::next3(k)], *corner[mesh::prev3(k)], *corner[k]))
+            encroaches(*corner[mesh::next3(k)], *corner[mesh::prev3(k)], *corner[k], quality_.encroachment_lens()))
             leaf.push_subsegment({EdgeRef(t, k), r.generation, false});
 }
 
@@ -174,6 +175,7 @@ void LeafRefiner::classify_all(Leaf& leaf) {
 
 void LeafRefiner::classify_created(Leaf& leaf) {
     report_.triangles_created += buffer_.created.size();
+    if (observer_ != nullptr) observer_->mesh_changed(buffer_.killed, buffer_.created);
     for (TriangleId id : buffer_.created) classify(leaf, id);
 }
 
@@ -207,7 +209,7 @@ bool LeafRefiner::refine_leaf(Leaf& leaf) {
         QueuedTriangle q;
         while (leaf.pop_poor(j, q)) {
             const mesh::Triangle& r = mesh_.triangle(q.id);
-            if (!r.live() || r.generation != q.generation) continue;  // stale
+            if (r.load_generation() != q.generation || !r.live()) continue;  // stale (generation first: see Triangle)
             if (report_.stopped != RefineReport::Stop::none) {
                 leaf.push_poor(q, j);
                 return false;
@@ -223,10 +225,10 @@ void LeafRefiner::split_queued_subsegments(Leaf& leaf) {
     QueuedSubsegment s;
     while (leaf.pop_subsegment(s)) {
         const mesh::Triangle& r = mesh_.triangle(s.edge.triangle());
-        if (!r.live() || r.generation != s.generation) continue;  // stale: its new triangles were classified
+        if (r.load_generation() != s.generation || !r.live()) continue;  // stale: its new triangles were classified
         const bool flagged = r.is_subsegment(s.edge.edge());
         if (!flagged && !r.n[s.edge.edge()].is_none()) continue;
-        if (!s.forced && !subsegment_encroached(mesh_, s.edge)) continue;
+        if (!s.forced && !subsegment_encroached(mesh_, s.edge, quality_.encroachment_lens())) continue;
         if (!may_split(s.edge) || !budget_left()) continue;  // counted by the final pass
         split_subsegment(leaf, s.edge);
     }
@@ -285,15 +287,10 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q) {
         give_up(q, reason_precision);
         return;
     }
-    Point p;
-    if (t.disk.radius > 0) {
-        p = run_.strategy().place(t, scratch_);
-        if (settings_.checked && !in_selection_disk(t, p))
-            throw Error(std::string("refine: placement strategy '") + run_.strategy().name() +
-                        "' returned a point outside the selection disk");
-    } else {
-        p = t.circle.centre;  // the disk is empty: the circumcentre is the only choice
-    }
+    const Point p = run_.strategy().place(t, scratch_);
+    if (settings_.checked && !admissible_point(t, p))
+        throw Error(std::string("refine: placement strategy '") + run_.strategy().name() +
+                    "' returned a point outside the selection disk (or, where that is empty, the circumdisk)");
     if (!finite(p)) {
         give_up(q, reason_precision);
         return;
@@ -304,8 +301,9 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q) {
     }
     auto requeue_if_alive = [&] {
         const mesh::Triangle& r = mesh_.triangle(q.id);
-        if (r.live() && r.generation == q.generation)
-            leaf.push_poor(q, leaf.sigma(t.circle.radius_squared));
+        if (r.load_generation() == q.generation && r.live())
+            leaf.push_poor(q, leaf.sigma(t.circle.radius_squared),
+                           quality_.shape_rank(t.shortest_length * t.shortest_length, t.circle.radius_squared, Leaf::rank_count));
     };
     auto split_instead = [&](EdgeRef e) {
         leaf.push_subsegment({e, mesh_.triangle(e.triangle()).generation, true});
@@ -354,7 +352,8 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q) {
             const Point& corner = mesh_.point(r.v[k]);
             nearest = std::min(nearest, geometry::squared_distance(corner, p));
             if (r.is_subsegment(k)) {
-                if (encroaches(mesh_.point(r.v[mesh::next3(k)]), mesh_.point(r.v[mesh::prev3(k)]), p))
+                if (encroaches(mesh_.point(r.v[mesh::next3(k)]), mesh_.point(r.v[mesh::prev3(k)]), p,
+                               quality_.encroachment_lens()))
                     blocking_.push_back(EdgeRef(cavity_[i], k));
                 continue;
             }
@@ -388,7 +387,8 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q) {
         return;
     }
     if (!budget_left()) {
-        leaf.push_poor(q, leaf.sigma(t.circle.radius_squared));
+        leaf.push_poor(q, leaf.sigma(t.circle.radius_squared),
+                           quality_.shape_rank(t.shortest_length * t.shortest_length, t.circle.radius_squared, Leaf::rank_count));
         return;
     }
 
@@ -416,6 +416,47 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q) {
     requeue_if_alive();  // p's cavity missed t (only through rounding): try again
 }
 
+void count_left(const mesh::Mesh& mesh, const RefineRun& run, std::vector<LeafRefiner::GivenUp> given_up,
+                RefineReport& report) {
+    // The final count of what is left poor, and why.
+    std::stable_sort(given_up.begin(), given_up.end(),
+              [](const auto& x, const auto& y) { return mesh::index(x.id) < mesh::index(y.id); });
+    const QualityTest& quality = run.quality();
+    mesh::for_each_triangle(mesh, [&](TriangleId id, const mesh::Triangle& t) {
+        const TriangleMeasures m =
+            QualityTest::measure(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]));
+        bool protected_angle = false;
+        if (quality.assess(mesh, id, m, &protected_angle) == Poorness::good) {
+            report.left_small_input_angle += protected_angle ? 1 : 0;
+            return;
+        }
+        // The last give-up recorded for this very triangle.
+        auto it = std::upper_bound(given_up.begin(), given_up.end(), mesh::index(id),
+                                   [](std::uint32_t i, const auto& g) { return i < mesh::index(g.id); });
+        std::uint8_t reason = 0xFF;
+        while (it != given_up.begin()) {
+            --it;
+            if (it->id != id) break;
+            if (it->generation == t.generation) {
+                reason = it->reason;
+                break;
+            }
+        }
+        if (reason == reason_no_split)
+            ++report.left_no_split;
+        else if (reason == reason_precision)
+            ++report.left_precision;
+        else if (report.stopped != RefineReport::Stop::none)
+            ++report.left_budget;
+        else
+            ++report.left_other;
+    });
+    mesh::for_each_edge(mesh, [&](const mesh::EdgeView& e) {
+        if (e.subsegment && subsegment_encroached(mesh, e.edge, run.quality().encroachment_lens()))
+            ++report.encroached_left;
+    });
+}
+
 // ---- the sequential driver ---------------------------------------------------
 
 void refine_mesh(mesh::Mesh& mesh, const RefineSettings& settings, RefineReport& report) {
@@ -436,43 +477,7 @@ void refine_mesh(mesh::Mesh& mesh, const RefineSettings& settings, RefineReport&
         while (!leaf.idle())
             if (!refiner.refine_leaf(leaf)) break;
 
-        // The final count of what is left poor, and why.
-        std::vector<LeafRefiner::GivenUp> given_up = refiner.given_up();
-        std::stable_sort(given_up.begin(), given_up.end(),
-                  [](const auto& x, const auto& y) { return mesh::index(x.id) < mesh::index(y.id); });
-        const QualityTest& quality = run.quality();
-        mesh::for_each_triangle(mesh, [&](TriangleId id, const mesh::Triangle& t) {
-            const TriangleMeasures m =
-                QualityTest::measure(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]));
-            bool protected_angle = false;
-            if (quality.assess(mesh, id, m, &protected_angle) == Poorness::good) {
-                report.left_small_input_angle += protected_angle ? 1 : 0;
-                return;
-            }
-            // The last give-up recorded for this very triangle.
-            auto it = std::upper_bound(given_up.begin(), given_up.end(), mesh::index(id),
-                                       [](std::uint32_t i, const auto& g) { return i < mesh::index(g.id); });
-            std::uint8_t reason = 0xFF;
-            while (it != given_up.begin()) {
-                --it;
-                if (it->id != id) break;
-                if (it->generation == t.generation) {
-                    reason = it->reason;
-                    break;
-                }
-            }
-            if (reason == reason_no_split)
-                ++report.left_no_split;
-            else if (reason == reason_precision)
-                ++report.left_precision;
-            else if (report.stopped != RefineReport::Stop::none)
-                ++report.left_budget;
-            else
-                ++report.left_other;
-        });
-        mesh::for_each_edge(mesh, [&](const mesh::EdgeView& e) {
-            if (e.subsegment && subsegment_encroached(mesh, e.edge)) ++report.encroached_left;
-        });
+        count_left(mesh, run, refiner.given_up(), report);
     }
 }
 

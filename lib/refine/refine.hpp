@@ -152,6 +152,16 @@ private:
     std::uint64_t safety_limit_ = 0;
 };
 
+// Told of every change refinement makes to the mesh, before the new
+// triangles are classified (the parallel layer keeps its quadtree counters
+// with it).  `killed` are the slots that died (some may already be reused in
+// `created`); `created` the new triangles, plus any a flip changed in place.
+class MeshObserver {
+public:
+    virtual ~MeshObserver() = default;
+    virtual void mesh_changed(std::span<const mesh::TriangleId> killed, std::span<const mesh::TriangleId> created) = 0;
+};
+
 // One thread's refiner: owns the pool, insertion buffer and scratch.
 class LeafRefiner {
 public:
@@ -176,6 +186,8 @@ public:
         std::uint8_t reason;  // 0 no_split, 1 precision
     };
     const std::vector<GivenUp>& given_up() const { return given_up_; }
+    // Optional (nullptr: none); not owned.
+    void set_observer(MeshObserver* observer) { observer_ = observer; }
 
 private:
     void refine_triangle(Leaf& leaf, QueuedTriangle q);
@@ -196,7 +208,14 @@ private:
     std::vector<mesh::TriangleId> cavity_;
     std::vector<mesh::EdgeRef> blocking_;
     std::vector<GivenUp> given_up_;
+    MeshObserver* observer_ = nullptr;
 };
+
+// The final pass of a run: counts the poor triangles left in `mesh` by
+// reason (the give-ups of all threads' refiners) and the encroached
+// subsegments left, into `report`.  Single-threaded.
+void count_left(const mesh::Mesh& mesh, const RefineRun& run, std::vector<LeafRefiner::GivenUp> given_up,
+                RefineReport& report);
 
 // The sequential refiner: one leaf that never splits, on the calling thread.
 // Requires a constrained Delaunay mesh without ghosts whose boundary edges

@@ -14,12 +14,12 @@ using mesh::EdgeRef;
 using mesh::VertexId;
 using mesh::VertexKind;
 
-bool subsegment_encroached(const mesh::Mesh& mesh, EdgeRef e) {
+bool subsegment_encroached(const mesh::Mesh& mesh, EdgeRef e, double lens) {
     const Point& a = mesh.point(mesh.origin(e));
     const Point& b = mesh.point(mesh.destination(e));
-    if (encroaches(a, b, mesh.point(mesh.apex(e)))) return true;
+    if (encroaches(a, b, mesh.point(mesh.apex(e)), lens)) return true;
     const EdgeRef across = mesh.neighbour(e);
-    return !across.is_none() && encroaches(a, b, mesh.point(mesh.apex(across)));
+    return !across.is_none() && encroaches(a, b, mesh.point(mesh.apex(across)), lens);
 }
 
 bool acute_corner(const mesh::Mesh& mesh, EdgeRef e, VertexId a, VertexId b) {

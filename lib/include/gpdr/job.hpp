@@ -34,8 +34,18 @@ struct JobResult {
     std::vector<std::string> statistics;
 };
 
+// Triangle's user test: non-zero means "refine this triangle".  Each pointer
+// gives x, y of a corner (counter-clockwise); area is positive.  gpdr calls it
+// from several threads at once, so it must be thread-safe.
+using Triunsuitable = int (*)(double* org, double* dest, double* apex, double area);
+
+// Code the application plugs into the job (linked in, or loaded with dlopen).
+struct JobPlugins {
+    Triunsuitable triunsuitable = nullptr;  // required by -u
+};
+
 // Runs the whole job.  Throws gpdr::Error subclasses on bad input or output;
 // warnings go to `warn` (the caller silences them for -Q).
-JobResult run_job(const Options& options, const WarningSink& warn);
+JobResult run_job(const Options& options, const WarningSink& warn, const JobPlugins& plugins = {});
 
 }  // namespace gpdr

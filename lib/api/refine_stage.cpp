@@ -1,0 +1,79 @@
+// The refinement stage of a run: switches -> refine::RefineSettings, the
+// refiner itself, and what its report means to the user (warnings).
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include <gpdr/errors.hpp>
+
+#include "api/job_stages.hpp"
+#include "refine/refine.hpp"
+
+namespace gpdr::api {
+
+bool wants_refinement(const Options& o) {
+    // Triangle refines for -q, -a (either form) and -u alike; -D alone only
+    // conforms (triangulate/conforming).
+    return o.quality || o.area_limit || o.regional_area || o.user_test;
+}
+
+refine::RefineSettings refine_settings(const Options& o, const JobPlugins& plugins, const PolyFile* poly) {
+    refine::RefineSettings s;
+    if (o.quality) s.criteria.min_angle_degrees = o.min_angle;
+    if (o.area_limit) s.criteria.max_area = o.max_area;
+    if (o.regional_area && poly) {
+        // The CDT numbers region i of the .poly as i + 1; 0 is "no region".
+        s.criteria.region_max_area.assign(poly->regions.size() + 1, -1.0);
+        for (std::size_t i = 0; i < poly->regions.size(); ++i)
+            s.criteria.region_max_area[i + 1] = poly->regions[i].max_area;
+    }
+    if (o.user_test) {
+        if (!plugins.triunsuitable)
+            throw UsageError(
+                "-u needs a triunsuitable() function: load one with --unsuitable PATH.so (built with "
+                "'cc -shared -fPIC -O2 -o PATH.so yours.c'), or link it into gpdr (cmake "
+                "-DGPDR_TRIUNSUITABLE=yours.c; see README, \"Grading with triunsuitable()\")");
+        s.criteria.user_test = plugins.triunsuitable;
+    }
+    s.placement = o.placement;
+    s.no_segment_splitting = o.no_segment_splitting;
+    s.steiner_limit = o.steiner_limit;
+    s.max_steiner = o.max_steiner;
+    s.granularity = o.granularity == 0 ? 1 : o.granularity;
+    return s;
+}
+
+void warn_before_refinement(const Options& o, const WarningSink& warn) {
+    if (o.quality && o.min_angle > 34.0)
+        warn(Warning{"", 0,
+                     fmt::format("a minimum angle of {} degrees may be out of reach (Triangle's refinement "
+                                 "usually works up to about 33); gpdr stops with a valid mesh if it is",
+                                 o.min_angle)});
+}
+
+void warn_after_refinement(const refine::RefineReport& r, const WarningSink& warn) {
+    using Stop = refine::RefineReport::Stop;
+    if (r.stopped == Stop::steiner_limit)
+        warn(Warning{"", 0, fmt::format("refinement stopped at the Steiner point limit (-S) after {} points; "
+                                        "{} triangles still fail the quality bounds",
+                                        r.steiner_points, r.left_budget)});
+    if (r.stopped == Stop::safety_limit)
+        warn(Warning{"", 0, fmt::format("refinement stopped after {} Steiner points because new points no "
+                                        "longer made progress (the bounds may be out of reach); the mesh "
+                                        "is valid but {} triangles still fail them",
+                                        r.steiner_points, r.left_budget)});
+    if (r.left_precision)
+        warn(Warning{"", 0, fmt::format("{} triangles were left as they are because refining them further "
+                                        "would exhaust floating-point precision",
+                                        r.left_precision)});
+    if (r.left_no_split)
+        warn(Warning{"", 0, fmt::format("{} triangles were left as they are because -Y/-YY forbids "
+                                        "splitting the segments they encroach",
+                                        r.left_no_split)});
+    if (r.left_other)
+        warn(Warning{"", 0, fmt::format("{} triangles still fail the quality bounds (please report this)",
+                                        r.left_other)});
+}
+
+}  // namespace gpdr::api

@@ -1,0 +1,248 @@
+// Splitting a subsegment (see split_subsegment.hpp for the contract).  The
+// cavity is Bowyer–Watson's as in insert.cpp, seeded with both triangles of
+// the subsegment; what differs is that the split edge itself is crossed, the
+// two new halves are flagged, and the fan is checked against the exact
+// orientation of every boundary edge because p may be a rounded point.
+
+#include "mesh/split_subsegment.hpp"
+
+#include <algorithm>
+
+#include <gpdr/errors.hpp>
+
+#include "geometry/constructions.hpp"
+#include "geometry/predicates.hpp"
+#include "mesh/flip.hpp"
+
+namespace gpdr::mesh {
+
+namespace {
+
+using geometry::orient2d;
+
+// Whether p lies strictly inside the wedges of t1 (and u) at the open edge
+// x-y: then the two seed triangles see p from all their outer edges.
+bool placeable(const Mesh& mesh, EdgeRef s, EdgeRef across, const Point& p) {
+    const Point& x = mesh.point(mesh.origin(s));
+    const Point& y = mesh.point(mesh.destination(s));
+    const Point& w = mesh.point(mesh.apex(s));
+    if (orient2d(y, w, p) <= 0 || orient2d(w, x, p) <= 0) return false;
+    if (across.is_none()) return true;
+    const Point& z = mesh.point(mesh.apex(across));
+    return orient2d(x, z, p) > 0 && orient2d(z, y, p) > 0;
+}
+
+Point midpoint(const Point& a, const Point& b) { return {0.5 * (a.x + b.x), 0.5 * (a.y + b.y)}; }
+
+void clear_marks(Mesh& mesh, const std::vector<TriangleId>& cavity) {
+    for (TriangleId t : cavity) mesh.triangle(t).flags &= static_cast<std::uint8_t>(~Triangle::mark_bit);
+}
+
+enum class Attempt { done, retry, broken };
+
+}  // namespace
+
+// Lawson's flips from the new triangles until every edge that is not a
+// subsegment is locally Delaunay.  Needed only when p is off the line x-y (a
+// rounded crossing): the bent subsegments x-p-y can leave a fan edge, or an
+// edge beside a triangle kept out of the cavity, not locally Delaunay.  A
+// non-locally-Delaunay edge always has a convex quadrilateral, so the flips
+// never get stuck, and they terminate (Lawson 1977).  The InsertBuffer's
+// boundary list, finished with, serves as the stack (in its `outer` field).
+void lawson_flips(Mesh& mesh, InsertBuffer& buf) {
+    auto& stack = buf.boundary;
+    stack.clear();
+    for (TriangleId id : buf.created)
+        for (int k = 0; k < 3; ++k) stack.push_back({no_vertex, no_vertex, EdgeRef(id, k), false});
+    while (!stack.empty()) {
+        const EdgeRef e = stack.back().outer;
+        stack.pop_back();
+        const Triangle& t = mesh.triangle(e.triangle());
+        const EdgeRef across = t.n[e.edge()];
+        if (!t.live() || across.is_none() || t.is_subsegment(e.edge())) continue;
+        const Triangle& u = mesh.triangle(across.triangle());
+        if (u.is_ghost() || t.is_ghost()) continue;
+        const Point& q = mesh.point(u.v[across.edge()]);
+        if (geometry::incircle(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]), q) <= 0) continue;
+        if (!flippable(mesh, e)) continue;
+        const TriangleId other = across.triangle();
+        flip(mesh, e);
+        if (std::find(buf.created.begin(), buf.created.end(), other) == buf.created.end())
+            buf.created.push_back(other);
+        for (TriangleId id : {e.triangle(), other})
+            for (int k : {0, 2}) stack.push_back({no_vertex, no_vertex, EdgeRef(id, k), false});
+    }
+}
+
+// One attempt at the cavity: the BFS, then the boundary walk in order.
+// `banned` triangles never join.  On `retry`, a non-seed triangle that cannot
+// see p has been added to `banned`.
+Attempt grow_cavity(Mesh& mesh, EdgeRef s, EdgeRef across, const Point& p, InsertBuffer& buf,
+                    std::vector<TriangleId>& banned) {
+    auto& cavity = buf.killed;
+    auto& boundary = buf.boundary;
+    cavity.clear();
+    boundary.clear();
+    const TriangleId t1 = s.triangle();
+    const TriangleId u = across.is_none() ? no_triangle : across.triangle();
+    mesh.triangle(t1).flags |= Triangle::mark_bit;
+    cavity.push_back(t1);
+    if (u != no_triangle) {
+        mesh.triangle(u).flags |= Triangle::mark_bit;
+        cavity.push_back(u);
+    }
+    std::size_t boundary_edges = 0;
+    for (std::size_t i = 0; i < cavity.size(); ++i) {
+        const Triangle& t = mesh.triangle(cavity[i]);
+        for (int k = 0; k < 3; ++k) {
+            const EdgeRef next = t.n[k];
+            if (next.is_none() || t.is_subsegment(k)) {
+                ++boundary_edges;
+                continue;
+            }
+            Triangle& v = mesh.triangle(next.triangle());
+            if (v.marked()) continue;
+            if (std::find(banned.begin(), banned.end(), next.triangle()) == banned.end() &&
+                in_circumcircle(mesh, v, p)) {
+                v.flags |= Triangle::mark_bit;
+                cavity.push_back(next.triangle());
+            } else {
+                ++boundary_edges;
+            }
+        }
+    }
+    auto is_boundary = [&](const Triangle& t, int k) {
+        const EdgeRef next = t.n[k];
+        return next.is_none() || t.is_subsegment(k) || !mesh.triangle(next.triangle()).marked();
+    };
+
+    // The walk starts at any boundary edge and meets every one in order.
+    EdgeRef e = EdgeRef::none();
+    for (TriangleId id : cavity) {
+        for (int k = 0; k < 3 && e.is_none(); ++k)
+            if (is_boundary(mesh.triangle(id), k)) e = EdgeRef(id, k);
+        if (!e.is_none()) break;
+    }
+    const EdgeRef first = e;
+    do {
+        const Triangle& t = mesh.triangle(e.triangle());
+        const VertexId from = t.v[next3(e.edge())], to = t.v[prev3(e.edge())];
+        if (e != s && orient2d(mesh.point(from), mesh.point(to), p) <= 0) {
+            if (e.triangle() == t1 || e.triangle() == u) return Attempt::broken;
+            banned.push_back(e.triangle());
+            return Attempt::retry;
+        }
+        boundary.push_back({from, to, t.n[e.edge()], t.is_subsegment(e.edge())});
+        TriangleId ct = e.triangle();
+        int j = next3(e.edge());
+        while (!is_boundary(mesh.triangle(ct), j)) {
+            const EdgeRef next = mesh.triangle(ct).n[j];
+            ct = next.triangle();
+            j = next3(next.edge());
+        }
+        e = EdgeRef(ct, j);
+    } while (e != first && boundary.size() <= boundary_edges);
+    return boundary.size() == boundary_edges ? Attempt::done : Attempt::broken;
+}
+
+bool can_split_at(const Mesh& mesh, EdgeRef s, const Point& p) { return placeable(mesh, s, mesh.neighbour(s), p); }
+
+InsertResult split_subsegment(Pool& pool, EdgeRef s, const Point& asked, VertexKind kind, InsertBuffer& buf) {
+    Mesh& mesh = pool.mesh();
+    const VertexId x = mesh.origin(s), y = mesh.destination(s);
+    const EdgeRef across = mesh.neighbour(s);
+
+    // Where the vertex goes: the asked point, or pulled toward the middle.
+    Point p = asked;
+    const Point middle = midpoint(mesh.point(x), mesh.point(y));
+    for (int i = 0; !placeable(mesh, s, across, p); ++i) {
+        if (i == 64) {
+            if (placeable(mesh, s, across, middle)) {
+                p = middle;
+                break;
+            }
+            throw Error("mesh: cannot place a vertex inside subsegment " + std::to_string(index(x)) + "-" +
+                        std::to_string(index(y)) + " (degenerate triangles around it)");
+        }
+        p = midpoint(p, middle);
+    }
+
+    // The split edge is crossed by the cavity: unflag it for the search.
+    Triangle& t1 = mesh.triangle(s.triangle());
+    const std::uint16_t region1 = t1.region;
+    const std::uint16_t region2 = across.is_none() ? region1 : mesh.triangle(across.triangle()).region;
+    t1.set_subsegment(s.edge(), false);
+    if (!across.is_none()) mesh.triangle(across.triangle()).set_subsegment(across.edge(), false);
+    auto restore = [&] {
+        clear_marks(mesh, buf.killed);
+        buf.killed.clear();
+        buf.boundary.clear();
+        buf.created.clear();
+        mesh.triangle(s.triangle()).set_subsegment(s.edge(), true);
+        if (!across.is_none()) mesh.triangle(across.triangle()).set_subsegment(across.edge(), true);
+    };
+
+    // `created` serves as the list of banned triangles until the fan.
+    std::vector<TriangleId>& banned = buf.created;
+    banned.clear();
+    for (;;) {
+        const Attempt a = grow_cavity(mesh, s, across, p, buf, banned);
+        if (a == Attempt::done) break;
+        if (a == Attempt::broken || banned.size() > 64) {
+            restore();
+            throw Error("mesh: the cavity of a subsegment split is not a disk (the mesh is broken near " +
+                        std::to_string(index(x)) + "-" + std::to_string(index(y)) + ")");
+        }
+        clear_marks(mesh, buf.killed);
+    }
+
+    // The fan starts at the boundary edge leaving y: edges from y round to x
+    // are on t1's side, from x round to y on the other side.
+    auto& boundary = buf.boundary;
+    const std::size_t m = boundary.size();
+    std::size_t first = m;
+    bool sees_x = false;
+    for (std::size_t i = 0; i < m; ++i) {
+        if (boundary[i].from == y) first = i;
+        if (boundary[i].from == x || boundary[i].to == x) sees_x = true;
+    }
+    if (first == m || !sees_x) {
+        restore();
+        throw Error("mesh: a subsegment split would remove an end of the subsegment");
+    }
+    const bool open = across.is_none();  // the hull edge x -> y is on the boundary and stays out
+    const std::size_t count = open ? m - 1 : m;
+
+    SubsegmentInfo info;
+    if (const SubsegmentInfo* found = mesh.subsegments().find(x, y)) info = *found;
+    const VertexId v = pool.new_vertex(p, kind);
+
+    for (TriangleId id : buf.killed) pool.destroy(id);
+    buf.created.clear();
+    bool other_side = false;
+    TriangleId previous = no_triangle;
+    for (std::size_t i = 0; i < count; ++i) {
+        const auto& b = boundary[(first + i) % m];
+        if (b.from == x) other_side = true;
+        const TriangleId id = pool.create(b.from, b.to, v);
+        Triangle& t = mesh.triangle(id);
+        t.region = other_side ? region2 : region1;
+        if (b.subsegment) t.set_subsegment(2, true);
+        if (b.to == x || b.to == y) t.set_subsegment(0, true);
+        if (b.from == x || b.from == y) t.set_subsegment(1, true);
+        mesh.link(EdgeRef(id, 2), b.outer);
+        if (previous != no_triangle) mesh.link(EdgeRef(previous, 0), EdgeRef(id, 1));
+        buf.created.push_back(id);
+        previous = id;
+    }
+    if (!open) mesh.link(EdgeRef(previous, 0), EdgeRef(buf.created.front(), 1));
+
+    if (orient2d(mesh.point(x), mesh.point(y), p) != 0) lawson_flips(mesh, buf);
+
+    mesh.subsegments().erase(x, y);
+    mesh.subsegments().set(x, v, info);
+    mesh.subsegments().set(v, y, info);
+    return {InsertStatus::inserted, v, EdgeRef::none()};
+}
+
+}  // namespace gpdr::mesh

@@ -62,6 +62,11 @@
 #define GRADING_X 200.0
 #define GRADING_Y 200.0
 
+/* Compiled as C++ the name would be mangled and neither gpdr nor Triangle
+ * would find it; extern "C" keeps the C name. */
+#ifdef __cplusplus
+extern "C"
+#endif
 int triunsuitable(double *org, double *dest, double *apex, double area)
 {
   /* The centroid: the mean of the three corners. */

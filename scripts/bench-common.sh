@@ -9,6 +9,17 @@ GPDR=${GPDR:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/build/gpdr}
 BENCH_DIR=${BENCH_DIR:-/tmp/gpdr-bench}
 mkdir -p "$BENCH_DIR"
 
+# The programs run from their input's folder: make relative paths absolute.
+absolute_program() {
+  case $1 in
+    */*) echo "$(cd "$(dirname "$1")" && pwd)/$(basename "$1")" ;;
+    *) echo "$1" ;;
+  esac
+}
+GPDR=$(absolute_program "$GPDR")
+if [ -n "${TRIANGLE:-}" ]; then TRIANGLE=$(absolute_program "$TRIANGLE"); fi
+if [ -n "${TRIANGLE_GRADED:-}" ]; then TRIANGLE_GRADED=$(absolute_program "$TRIANGLE_GRADED"); fi
+
 if [ ! -x /usr/bin/time ]; then
   echo "bench: installing the 'time' package for peak-memory figures" >&2
   DEBIAN_FRONTEND=noninteractive apt-get install -y -qq time >/dev/null
@@ -41,10 +52,12 @@ bench_run() {
     echo "| $(basename "$input") | $label | -$switches | failed: $(tail -1 "$log") |"; return; }
   local wall peak
   read -r wall peak <"$tlog"
-  local tri_ms dl seg hole
+  # Triangle: Delaunay + Segment + Hole; gpdr: Read + Delaunay (points) or Mesh (-p).
+  local tri_ms dl seg hole mesh
   dl=$(ms "$log" "Delaunay"); seg=$(ms "$log" "Segment"); hole=$(ms "$log" "Hole"); tri_ms=$(ms "$log" "Read")
+  mesh=$(ms "$log" "Mesh")
   local pre
-  pre=$(awk -v a="$dl" -v b="$seg" -v c="$hole" -v d="$tri_ms" 'BEGIN { printf "%.3f", a + b + c + d }')
+  pre=$(awk -v a="$dl" -v b="$seg" -v c="$hole" -v d="$tri_ms" -v e="$mesh" 'BEGIN { printf "%.3f", a + b + c + d + e }')
   echo "| $(basename "$input") | $label | -$switches | $(count "$log" "Mesh vertices:") | $(count "$log" "Mesh triangles:") | $pre | $(ms "$log" "Quality") | $(ms "$log" "Output") | $wall | $((peak / 1024)) |"
 }
 

@@ -2,6 +2,8 @@
 // The stages of one gpdr run (job.cpp strings them together): refuse what is
 // not implemented yet, turn the finished mesh into arrays, write the files.
 
+#include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -13,11 +15,50 @@
 #include <gpdr/diagnostics.hpp>
 #include <gpdr/job.hpp>
 
+#include <gpdr/io.hpp>
+
 #include "api/mesh_arrays.hpp"
 #include "mesh/mesh.hpp"
+#include "refine/area_bounds.hpp"
 #include "refine/refine.hpp"
+#include "triangulate/pslg.hpp"
 
 namespace gpdr::api {
+
+// Everything the input files say, read and validated before anything else
+// happens, so that a malformed file is reported by file and line whatever
+// the switches ask for.
+struct Input {
+    io::ReadResult<NodeSet> nodes;
+    std::string node_file;            // where the vertices came from
+    std::string poly_file, ele_file;  // the files read, for messages
+    std::optional<PolyFile> poly;     // -p (its nodes moved into `nodes`)
+    std::optional<EleSet> triangles;  // -r
+    std::optional<AreaSet> areas;     // -r with bare -a
+};
+Input read_input(const Options& options, const FileNames& names, const WarningSink& warn);
+
+// The mesh before refinement, and what later stages need to know about how
+// it was made.
+struct Triangulated {
+    mesh::Mesh mesh;
+    std::uint64_t duplicates = 0;     // input vertices left out
+    std::uint64_t steiner_points = 0; // vertices -D added
+    // Vertices added on segments so far, for attribute interpolation.
+    std::vector<refine::NewVertex> new_vertices;
+    // Input segment ends (2 per segment), for refinement's small-angle rule.
+    std::vector<mesh::VertexId> segment_ends;
+    // Triangle attributes by region index (Triangle::region):
+    // triangle_attribute_count values per region, region 0 first.
+    std::uint32_t triangle_attribute_count = 0;
+    std::vector<double> region_attributes;
+    // -ra: per-triangle area bounds from the .area file.
+    std::unique_ptr<refine::AreaBounds> area_bounds;
+    // -p: the PSLG and what the CDT reported, for -C's conformity check.
+    std::optional<triangulate::Pslg> pslg;
+    triangulate::CdtReport cdt_report;
+};
+Triangulated triangulate_input(const Options& options, Input& input, const WarningSink& warn);
 
 // Throws NotImplemented, naming the switch, for every feature a later version
 // delivers, so that no switch is ever silently ignored.
@@ -37,8 +78,10 @@ void warn_after_refinement(const refine::RefineReport& report, const WarningSink
 // vertex: on a subsegment, or in a triangle).  Vertex markers follow Triangle: a non-zero input marker is
 // kept, otherwise a vertex on a subsegment takes its marker, otherwise a
 // vertex on the boundary gets 1 and any other 0.
-MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes,
-                          std::span<const refine::NewVertex> added = {});
+// Triangles get `attribute_count` attributes each from `region_attributes`
+// by their region index.
+MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::span<const refine::NewVertex> added,
+                          std::uint32_t attribute_count, std::span<const double> region_attributes);
 
 // The marker of mesh edge {a, b} (Triangle's rules): a subsegment's own
 // marker if non-zero, else 1 on the boundary, else 0.

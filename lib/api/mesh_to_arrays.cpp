@@ -53,7 +53,8 @@ void interpolate_attributes(const mesh::Mesh& mesh, NodeSet& nodes, const std::v
 
 }  // namespace
 
-MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::span<const refine::NewVertex> added) {
+MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::span<const refine::NewVertex> added,
+                          std::uint32_t attribute_count, std::span<const double> region_attributes) {
     MeshArrays out;
 
     // Vertex numbers: the input vertices keep theirs (duplicates included,
@@ -85,11 +86,16 @@ MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::span<const
     out.triangles.corners_per_triangle = 3;
     out.triangles.corners.reserve(3 * std::size_t{count});
     out.neighbours.neighbours.reserve(3 * std::size_t{count});
+    out.triangles.attribute_count = attribute_count;
+    out.triangles.attributes.reserve(std::size_t{attribute_count} * count);
     mesh::for_each_triangle(mesh, [&](mesh::TriangleId, const mesh::Triangle& t) {
         for (int k = 0; k < 3; ++k) {
             out.triangles.corners.push_back(number[index(t.v[k])]);
             out.neighbours.neighbours.push_back(t.n[k].is_none() ? none : triangle_number[index(t.n[k].triangle())]);
         }
+        const std::size_t row = std::size_t{t.region} * attribute_count;
+        for (std::uint32_t i = 0; i < attribute_count; ++i)
+            out.triangles.attributes.push_back(row + i < region_attributes.size() ? region_attributes[row + i] : 0.0);
     });
 
     // Markers: keep non-zero input markers; otherwise a subsegment's marker,

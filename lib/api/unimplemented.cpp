@@ -12,8 +12,6 @@ void refuse_unimplemented(const Options& o) {
     const auto refuse = [](const char* what) {
         throw NotImplemented(std::string(what) + " is not implemented yet in this version of gpdr");
     };
-    if (o.refine) refuse("-r (refining an existing mesh)");
-    if (o.poly) refuse("-p (constrained Delaunay triangulation of a .poly file)");
     if (o.threads > 1 && wants_refinement(o)) refuse("-jN with N > 1 (parallel refinement)");
     // On a point set without -p or -r, as in Triangle: -A and -O do nothing
     // (regions and holes come from a .poly); -D does nothing (a Delaunay

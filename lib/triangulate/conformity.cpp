@@ -3,6 +3,7 @@
 #include "triangulate/conformity.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -91,6 +92,7 @@ std::vector<std::string> check_conformity(const Mesh& mesh, const Pslg& pslg, co
         }
         const Point& pa = mesh.point(a);
         const Point& pb = mesh.point(b);
+        const double length_squared = (pb.x - pa.x) * (pb.x - pa.x) + (pb.y - pa.y) * (pb.y - pa.y);
         // Depth-first: near-coincident rounded vertices can offer two
         // flagged edges along the segment, only one of which goes on.
         std::vector<VertexId> stack{a};
@@ -126,11 +128,23 @@ std::vector<std::string> check_conformity(const Mesh& mesh, const Pslg& pslg, co
                         // rounded or snapped one: any direction (the visited
                         // marks stop cycles).  Others must be exactly on it
                         // and ahead.
+                        // So may one joined to v by a subsegment recorded as
+                        // a piece of this segment: refinement's split points
+                        // are rounded too.
+                        const SubsegmentInfo* info = t.is_subsegment(k) ? mesh.subsegments().find(v, w) : nullptr;
                         const bool is_listed =
+                            (info && info->segment == s) ||
                             std::find(listed[s].begin(), listed[s].end(), w) != listed[s].end();
-                        if (!is_listed && along(pv, pw, pa, pb) <= 0) continue;
-                        if (orient2d(pv, pw, pb) == 0) covered = true;
-                        const bool on = is_listed || orient2d(pa, pb, pw) == 0;
+                        const bool ahead = along(pv, pw, pa, pb) > 0;
+                        if (!is_listed && !ahead) continue;
+                        if (ahead && orient2d(pv, pw, pb) == 0) covered = true;
+                        // A Steiner point within rounding of the line counts
+                        // too: a crossing on a stretch two collinear segments
+                        // share is reported for one of them only.
+                        const double o = orient2d(pa, pb, pw);
+                        const bool on = is_listed || o == 0 ||
+                                        (mesh.kind(w) == VertexKind::segment &&
+                                         std::abs(o) <= 1e-9 * length_squared);
                         if (!t.is_subsegment(k) || !on || visited[index(w)]) continue;
                         if (w != b && !is_listed && along(pw, pb, pa, pb) <= 0) continue;  // past the end
                         stack.push_back(w);
@@ -150,7 +164,9 @@ std::vector<std::string> check_conformity(const Mesh& mesh, const Pslg& pslg, co
             for (std::uint32_t w = 0; w < vertex_end; ++w) {
                 if (corner[w] == no_triangle || visited[w]) continue;
                 const Point& pw = mesh.point(VertexId{w});
-                if (orient2d(pa, pb, pw) != 0) continue;
+                if (orient2d(pa, pb, pw) != 0 &&
+                    std::find(listed[s].begin(), listed[s].end(), VertexId{w}) == listed[s].end())
+                    continue;
                 const double ahead = along(pv, pw, pa, pb);
                 if (ahead <= 0 || (VertexId{w} != b && along(pw, pb, pa, pb) <= 0)) continue;
                 if (resume == no_vertex || ahead < best) {

@@ -295,7 +295,15 @@ TriangleId insert_piece(Pool& pool, VertexId a, VertexId b, const SubsegmentInfo
     targets.push_back(b);
     VertexId current = a;
     VertexId split_at = no_vertex;
+    buf.path.clear();
+    buf.path.push_back(a);
+    // Each step passes a vertex, creates one or removes a constraint, so the
+    // loop is bounded; the guard turns a bug into an error, never a hang.
+    std::uint64_t steps_left = 8ull * mesh.vertex_end() + 1024;
     while (!targets.empty()) {
+        if (--steps_left == 0)
+            throw Error("segment insertion from vertex " + vertex_name(a) + " to " + vertex_name(b) +
+                        " does not terminate");
         const VertexId target = targets.back();
         const Step step = find_wedge(mesh, t, current, target);
         if (step.kind != Step::Kind::cross) {
@@ -306,6 +314,7 @@ TriangleId insert_piece(Pool& pool, VertexId a, VertexId b, const SubsegmentInfo
                 buf.events.push_back({SegmentEvent::Kind::through_vertex, step.vertex, {}, {}, {}, info.segment});
             t = step.edge.triangle();
             current = step.vertex;
+            buf.path.push_back(current);
             continue;
         }
         const Walk w = walk(mesh, current, target, step.edge, buf);
@@ -322,11 +331,22 @@ TriangleId insert_piece(Pool& pool, VertexId a, VertexId b, const SubsegmentInfo
             const double dx = geometry::squared_distance(p, mesh.point(x));
             const double dy = geometry::squared_distance(p, mesh.point(y));
             if (!can_split_at(mesh, w.edge, p) || std::min(dx, dy) <= near) {
-                // The crossing is (within rounding) an end of x-y: the
-                // segment goes through that end instead.
-                targets.push_back(dx <= dy ? x : y);
-                if (record) buf.events.push_back({SegmentEvent::Kind::through_vertex, targets.back(), {}, {}, {}, info.segment});
-                continue;
+                // The crossing is (within rounding) an end of x-y, or cannot
+                // be represented beside a sliver: the segment goes through
+                // an end instead, the nearer one not passed already (going
+                // back would cycle).
+                const VertexId first = dx <= dy ? x : y, second = dx <= dy ? y : x;
+                const auto passed = [&](VertexId v) {
+                    return std::find(buf.path.begin(), buf.path.end(), v) != buf.path.end();
+                };
+                const VertexId snap = !passed(first) ? first : !passed(second) ? second : no_vertex;
+                if (snap != no_vertex) {
+                    targets.push_back(snap);
+                    if (record)
+                        buf.events.push_back(
+                            {SegmentEvent::Kind::through_vertex, snap, {}, {}, {}, info.segment});
+                    continue;
+                }
             }
             for (const VertexId v : {target, current}) {
                 if (geometry::squared_distance(p, mesh.point(v)) > near) continue;
@@ -367,6 +387,7 @@ TriangleId insert_piece(Pool& pool, VertexId a, VertexId b, const SubsegmentInfo
         if (!arrived(targets, w.end) && record)
             buf.events.push_back({SegmentEvent::Kind::through_vertex, w.end, {}, {}, {}, info.segment});
         current = w.end;
+        buf.path.push_back(current);
     }
     return t;
 }

@@ -88,6 +88,7 @@ struct SegmentBuffer {
     std::vector<std::uint8_t> left_flag, right_flag;
     std::vector<Task> tasks;
     std::vector<mesh::VertexId> targets;
+    std::vector<mesh::VertexId> path;  // vertices the current piece has passed
 };
 
 // Fills buffer.corner from every live triangle of the mesh (and sets

@@ -1,0 +1,43 @@
+// The read stage of a run: which files the switches name, read and checked
+// in full before any meshing starts.
+
+#include <gpdr/io.hpp>
+
+#include "api/job_stages.hpp"
+
+namespace gpdr::api {
+
+Input read_input(const Options& options, const FileNames& names, const WarningSink& warn) {
+    const int default_base = options.zero_based ? 0 : 1;
+    Input in;
+    if (options.poly && !options.refine) {
+        auto poly = io::read_poly(names.in_poly, warn, default_base);
+        in.nodes.base = poly.base;
+        in.nodes.data = std::move(poly.data.nodes);
+        in.node_file = poly.data.nodes_from_node_file ? names.in_node : names.in_poly;
+        in.poly_file = names.in_poly;
+        poly.data.nodes = {};
+        in.poly = std::move(poly.data);
+        return in;
+    }
+    in.nodes = io::read_node(names.in_node, warn, default_base);
+    in.node_file = names.in_node;
+    if (options.refine) {
+        const int base = in.nodes.base;
+        auto ele = io::read_ele(names.in_ele, base, in.nodes.data.size(), warn);
+        in.ele_file = names.in_ele;
+        if (options.poly) {
+            // The .poly of a mesh written by gpdr or Triangle has no vertices
+            // of its own (count 0): they come from the .node just read again.
+            auto poly = io::read_poly(names.in_poly, warn, default_base);
+            poly.data.nodes = {};
+            in.poly_file = names.in_poly;
+            in.poly = std::move(poly.data);
+        }
+        if (options.regional_area) in.areas = io::read_area(names.in_area, base, ele.data.size(), warn).data;
+        in.triangles = std::move(ele.data);
+    }
+    return in;
+}
+
+}  // namespace gpdr::api

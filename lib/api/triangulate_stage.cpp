@@ -1,0 +1,224 @@
+// The triangulation stage of a run: the Delaunay triangulation of a point
+// set, the constrained Delaunay triangulation of a .poly (-p), or the mesh of
+// an .ele rebuilt (-r); then -D's conforming splits.  What the library
+// reports about the input (duplicates, crossings) becomes warnings here.
+
+#include <map>
+
+#include <fmt/format.h>
+
+#include <gpdr/errors.hpp>
+
+#include "api/job_stages.hpp"
+#include "mesh/pool.hpp"
+#include "mesh/traverse.hpp"
+#include "triangulate/conforming.hpp"
+#include "triangulate/constrained.hpp"
+#include "triangulate/delaunay.hpp"
+#include "triangulate/from_triangles.hpp"
+#include "triangulate/lawson.hpp"
+
+namespace gpdr::api {
+namespace {
+
+// A list of at most `shown` items, then "and N more".
+template <class T, class F>
+std::string list_some(const std::vector<T>& items, F&& describe, std::size_t shown = 8) {
+    std::string s;
+    for (std::size_t i = 0; i < items.size() && i < shown; ++i) s += (i ? ", " : "") + describe(items[i]);
+    if (items.size() > shown) s += fmt::format(", and {} more", items.size() - shown);
+    return s;
+}
+
+void warn_duplicates(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& duplicates, const std::string& file,
+                     int base, const WarningSink& warn) {
+    if (duplicates.empty()) return;
+    warn(Warning{file, 0,
+                 fmt::format("{} duplicate vert{} left out of the mesh: {}", duplicates.size(),
+                             duplicates.size() == 1 ? "ex" : "ices",
+                             list_some(duplicates, [&](const auto& d) {
+                                 return fmt::format("{} (same as {})", d.first + base, d.second + base);
+                             }))});
+}
+
+std::vector<geometry::Point> points_of(const NodeSet& nodes) {
+    std::vector<geometry::Point> points(nodes.size());
+    for (std::size_t i = 0; i < points.size(); ++i) points[i] = {nodes.xy[2 * i], nodes.xy[2 * i + 1]};
+    return points;
+}
+
+// Triangle's hull-as-segments: -c writes the hull to the .poly, and
+// refinement keeps its Steiner points inside it.
+void make_hull_segments(mesh::Mesh& mesh) {
+    std::vector<mesh::EdgeView> hull;
+    mesh::for_each_hull_edge(mesh, [&](const mesh::EdgeView& e) {
+        if (!e.subsegment) hull.push_back(e);
+    });
+    for (const auto& e : hull) {
+        mesh.triangle(e.edge.triangle()).set_subsegment(e.edge.edge(), true);
+        mesh.subsegments().set(e.from, e.to, mesh::SubsegmentInfo{1, mesh::SubsegmentInfo::no_segment});
+    }
+}
+
+void triangulate_points(const Options& options, Input& in, Triangulated& out, const WarningSink& warn) {
+    triangulate::DelaunayReport report;
+    try {
+        out.mesh = triangulate::delaunay(points_of(in.nodes.data), report);
+    } catch (const GeometryError& e) {
+        throw InputError(in.node_file, 0, e.what());
+    }
+    warn_duplicates(report.duplicates, in.node_file, in.nodes.base, warn);
+    out.duplicates = report.duplicates.size();
+    if (options.convex_hull || wants_refinement(options)) make_hull_segments(out.mesh);
+}
+
+void triangulate_pslg(const Options& options, Input& in, Triangulated& out, const WarningSink& warn) {
+    const PolyFile& poly = *in.poly;
+    triangulate::Pslg& pslg = out.pslg.emplace();
+    pslg.points = points_of(in.nodes.data);
+    pslg.segments = poly.segments.endpoints;
+    pslg.segment_markers = poly.segments.markers;
+    for (std::size_t i = 0; i + 1 < poly.holes.size(); i += 2) pslg.holes.push_back({poly.holes[i], poly.holes[i + 1]});
+    pslg.regions = poly.regions;
+    triangulate::CdtOptions cdt;
+    cdt.convex_hull = options.convex_hull;
+    cdt.ignore_holes = options.ignore_holes;
+    triangulate::CdtReport& report = out.cdt_report;
+    try {
+        out.mesh = triangulate::constrained_delaunay(pslg, cdt, report);
+    } catch (const GeometryError& e) {
+        throw InputError(in.poly_file, 0, e.what());
+    }
+    const int base = in.nodes.base;
+    warn_duplicates(report.duplicate_vertices, in.node_file, base, warn);
+    out.duplicates = report.duplicate_vertices.size();
+    if (!report.duplicate_segments.empty())
+        warn(Warning{in.poly_file, 0, fmt::format("duplicate segments left out: {}",
+                                                  list_some(report.duplicate_segments, [&](const auto& d) {
+                                                      return fmt::format("{} (same as {})", d.first + base,
+                                                                         d.second + base);
+                                                  }))});
+    std::vector<triangulate::NewSegmentVertex> crossings;
+    for (const auto& v : report.new_vertices)
+        if (v.other_segment != triangulate::NewSegmentVertex::no_segment) crossings.push_back(v);
+    if (!crossings.empty())
+        warn(Warning{in.poly_file, 0, fmt::format("segments cross; a vertex was added at each crossing: {}",
+                                                  list_some(crossings, [&](const auto& v) {
+                                                      const auto& p = out.mesh.point(v.vertex);
+                                                      return fmt::format("segments {} and {} at ({}, {})",
+                                                                         v.segment + base, v.other_segment + base,
+                                                                         p.x, p.y);
+                                                  }))});
+    // Attributes of the new vertices: interpolated along their segment.
+    for (const auto& v : report.new_vertices) {
+        if (v.segment == triangulate::NewSegmentVertex::no_segment) continue;
+        refine::NewVertex n;
+        n.vertex = v.vertex;
+        n.on_segment = true;
+        n.from = mesh::VertexId{pslg.segments[2 * std::size_t{v.segment}]};
+        n.to = mesh::VertexId{pslg.segments[2 * std::size_t{v.segment} + 1]};
+        n.t = v.t;
+        out.new_vertices.push_back(n);
+    }
+    out.segment_ends.reserve(pslg.segments.size());
+    for (const std::uint32_t v : pslg.segments) out.segment_ends.push_back(mesh::VertexId{v});
+    if (options.region_attributes) {
+        out.triangle_attribute_count = 1;
+        out.region_attributes.assign(poly.regions.size() + 1, 0.0);
+        for (std::size_t r = 0; r < poly.regions.size(); ++r) out.region_attributes[r + 1] = poly.regions[r].attribute;
+    }
+}
+
+void rebuild_mesh(const Options& options, Input& in, Triangulated& out) {
+    const EleSet& ele = *in.triangles;
+    const std::vector<geometry::Point> points = points_of(in.nodes.data);
+    triangulate::TriangleMeshInput input;
+    input.points = points;
+    input.corners = ele.corners;
+    input.corners_per_triangle = ele.corners_per_triangle;
+    input.index_base = in.nodes.base;
+    if (in.poly) {
+        input.segments = in.poly->segments.endpoints;
+        input.segment_markers = in.poly->segments.markers;
+    }
+    triangulate::TriangleMeshReport report;
+    try {
+        out.mesh = triangulate::from_triangles(input, report);
+    } catch (const GeometryError& e) {
+        throw InputError(in.ele_file, 0, e.what());
+    }
+    // Triangle attributes ride on the region field, which every later stage
+    // passes from a triangle to the ones that replace it: region r + 1 is
+    // the r-th distinct attribute tuple.
+    const std::uint32_t na = ele.attribute_count;
+    if (na > 0) {
+        out.triangle_attribute_count = na;
+        out.region_attributes.assign(na, 0.0);  // region 0: none
+        std::map<std::vector<double>, std::uint16_t> index;
+        for (std::size_t t = 0; t < ele.size(); ++t) {
+            std::vector<double> tuple(ele.attributes.begin() + static_cast<std::ptrdiff_t>(t * na),
+                                      ele.attributes.begin() + static_cast<std::ptrdiff_t>((t + 1) * na));
+            auto [it, fresh] = index.try_emplace(tuple, static_cast<std::uint16_t>(index.size() + 1));
+            if (fresh) {
+                if (index.size() > 65534)
+                    throw NotImplemented(fmt::format("{}: more than 65534 distinct triangle attribute values", in.ele_file));
+                out.region_attributes.insert(out.region_attributes.end(), tuple.begin(), tuple.end());
+            }
+            out.mesh.triangle(mesh::TriangleId{static_cast<std::uint32_t>(t)}).region = it->second;
+        }
+    }
+    if (in.areas) {
+        out.area_bounds = std::make_unique<refine::AreaBounds>();
+        for (std::size_t t = 0; t < in.areas->size(); ++t)
+            out.area_bounds->set(mesh::TriangleId{static_cast<std::uint32_t>(t)}, (*in.areas)[t]);
+    }
+    if (in.poly) {
+        out.segment_ends.reserve(in.poly->segments.endpoints.size());
+        for (const std::uint32_t v : in.poly->segments.endpoints) out.segment_ends.push_back(mesh::VertexId{v});
+    }
+    // Refinement and -D insert with Bowyer-Watson, which needs a constrained
+    // Delaunay mesh; a mesh read back need not be one.
+    if (wants_refinement(options) || options.conforming_delaunay) triangulate::make_constrained_delaunay(out.mesh);
+}
+
+}  // namespace
+
+Triangulated triangulate_input(const Options& options, Input& in, const WarningSink& warn) {
+    Triangulated out;
+    if (options.refine)
+        rebuild_mesh(options, in, out);
+    else if (in.poly)
+        triangulate_pslg(options, in, out, warn);
+    else
+        triangulate_points(options, in, out, warn);
+
+    // -D: split subsegments until every triangle is Delaunay.  (On a point
+    // set the Delaunay triangulation already is.)
+    if (options.conforming_delaunay && (options.poly || options.refine)) {
+        triangulate::ConformingReport report;
+        {
+            mesh::Pool pool(out.mesh);
+            triangulate::make_conforming(pool, triangulate::conforming_options(options), report);
+        }
+        out.steiner_points += report.points_added;
+        for (const auto& s : report.splits) {
+            refine::NewVertex n;
+            n.vertex = s.vertex;
+            n.on_segment = true;
+            n.from = s.from;
+            n.to = s.to;
+            n.t = s.t;
+            out.new_vertices.push_back(n);
+        }
+        if (report.encroached_left)
+            warn(Warning{"", 0, fmt::format("{} subsegments are still encroached ({}), so the mesh is not "
+                                            "conforming Delaunay everywhere",
+                                            report.encroached_left,
+                                            report.stopped == triangulate::ConformingReport::Stop::steiner_limit
+                                                ? "the -S limit was reached"
+                                                : "-Y/-YY forbids splitting them, or they are too short")});
+    }
+    return out;
+}
+
+}  // namespace gpdr::api

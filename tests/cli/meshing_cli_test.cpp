@@ -1,0 +1,165 @@
+// The built gpdr meshing real inputs: every output checked by -C (the
+// library's invariant checker) and by measuring the files it wrote.
+
+#include <catch2/catch.hpp>
+
+#include "cli/mesh_files.hpp"
+
+using namespace gpdr::test;
+
+namespace {
+
+// A square with a square hole and two regions (attributes 1 and 2, area
+// bounds 0.05 and none), in Triangle's .poly format.
+const std::string two_regions = R"(# square with a hole, split in two regions by a vertical segment
+8 2 0 1
+1 0 0 0
+2 4 0 0
+3 4 4 0
+4 0 4 0
+5 1.5 1.5 0
+6 2.5 1.5 0
+7 2.5 2.5 0
+8 1.5 2.5 0
+10 1
+1 1 2 1
+2 2 3 1
+3 3 4 1
+4 4 1 1
+5 5 6 2
+6 6 7 2
+7 7 8 2
+8 8 5 2
+9 1 5 0
+10 3 7 0
+1
+1 2 2
+2
+1 0.5 2 1 0.05
+2 3.5 2 2 -1
+)";
+
+void require_checked(const RunResult& r) {
+    INFO("stdout: " << r.out << "\nstderr: " << r.err);
+    REQUIRE(r.status == 0);
+    REQUIRE(r.err.find("check:") == std::string::npos);
+}
+
+}  // namespace
+
+TEST_CASE("-pq meets the angle bound on the project's samples", "[cli][quality]") {
+    const auto angle = GENERATE(20, 30, 33);
+    const std::string sample = GENERATE(as<std::string>{}, "flow.poly", "pipe.poly");
+    TempDir dir;
+    dir.write(sample, sample_text(sample));
+    const auto r = run_gpdr(dir, "-pCq" + std::to_string(angle) + " " + sample);
+    require_checked(r);
+    const std::string stem = sample.substr(0, sample.size() - 5) + ".1";
+    CHECK(dir.exists(stem + ".poly"));
+    const MeshFiles m = MeshFiles::read(dir, stem);
+    REQUIRE(m.triangles.size() > 100);
+    double smallest = 180;
+    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+        REQUIRE(m.area(t) > 0);
+        smallest = std::min(smallest, m.smallest_angle(t));
+    }
+    // The samples have no input angle below 60 degrees, so no triangle is
+    // exempt from the bound.
+    CHECK(smallest >= angle - 1e-9);
+}
+
+TEST_CASE("-a bounds every triangle's area; regions set attributes and bounds", "[cli][quality]") {
+    TempDir dir;
+    dir.write("r.poly", two_regions);
+    SECTION("global bound") {
+        require_checked(run_gpdr(dir, "-pCa0.01 r.poly"));
+        const MeshFiles m = MeshFiles::read(dir, "r.1");
+        for (std::size_t t = 0; t < m.triangles.size(); ++t) REQUIRE(m.area(t) <= 0.01);
+    }
+    SECTION("regional bounds and -A attributes") {
+        require_checked(run_gpdr(dir, "-pCAaq r.poly"));
+        const MeshFiles m = MeshFiles::read(dir, "r.1");
+        REQUIRE(m.triangles.attribute_count == 1);
+        std::size_t left = 0, right = 0;
+        for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+            const double attribute = m.triangles.attributes[t];
+            // The hole is gone: no triangle has its centroid inside it.
+            const double x = m.centroid_x(t), y = m.centroid_y(t);
+            REQUIRE_FALSE((x > 1.5 && x < 2.5 && y > 1.5 && y < 2.5));
+            // The segments from (0, 0) and (4, 4) to the hole cut the ring
+            // into the half above the diagonal (region 1, holding (0.5, 2))
+            // and the half below it (region 2).
+            if (y > x) {
+                ++left;
+                REQUIRE(attribute == 1);
+                REQUIRE(m.area(t) <= 0.05);
+            } else {
+                ++right;
+                REQUIRE(attribute == 2);
+            }
+        }
+        CHECK(left > 2 * right);  // only region 1 is bounded
+    }
+}
+
+TEST_CASE("-p then -rp leaves the mesh unchanged; -rq refines it further", "[cli][refine]") {
+    TempDir dir;
+    // flow.poly has no input angle below 90 degrees: no triangle is exempt
+    // from the angle bound.
+    dir.write("r.poly", sample_text("flow.poly"));
+    require_checked(run_gpdr(dir, "-pq r.poly"));
+    require_checked(run_gpdr(dir, "-rpC r.1"));
+    const MeshFiles first = MeshFiles::read(dir, "r.1"), second = MeshFiles::read(dir, "r.2");
+    CHECK(first.canonical() == second.canonical());
+    require_checked(run_gpdr(dir, "-rpCq30a0.5 r.2"));
+    const MeshFiles third = MeshFiles::read(dir, "r.3");
+    CHECK(third.triangles.size() > second.triangles.size());
+    for (std::size_t t = 0; t < third.triangles.size(); ++t) {
+        REQUIRE(third.smallest_angle(t) >= 30 - 1e-9);
+        REQUIRE(third.area(t) <= 0.5);
+    }
+}
+
+TEST_CASE("-c, -e, -n, -v, -o2 and -j write what Triangle writes", "[cli][outputs]") {
+    TempDir dir;
+    dir.write("p.node", sample_text("points.node"));
+    require_checked(run_gpdr(dir, "-cenvo2C p.node"));
+    for (const char* f : {"p.1.node", "p.1.ele", "p.1.poly", "p.1.edge", "p.1.neigh", "p.1.v.node", "p.1.v.edge"})
+        CHECK(dir.exists(f));
+    const MeshFiles m = MeshFiles::read(dir, "p.1");
+    CHECK(m.triangles.corners_per_triangle == 6);
+    // A node per edge midpoint after the 500 vertices, and Euler's formula
+    // for a triangulated disk: V - E + T = 1.
+    const auto edges = gpdr::io::read_edge((dir / "p.1.edge").string(), m.base, m.nodes.size(), gpdr::ignore_warning);
+    CHECK(m.nodes.size() == 500 + edges.data.size());
+    CHECK(500 + m.triangles.size() == edges.data.size() + 1);
+    // Every triangle, then -j on a .node with an unused (duplicate) vertex.
+    dir.write("d.node", "4 2 0 0\n1 0 0\n2 1 0\n3 0 1\n4 1 0\n");
+    const auto r = run_gpdr(dir, "-j d.node");
+    REQUIRE(r.status == 0);
+    CHECK(r.err.find("duplicate") != std::string::npos);
+    CHECK(MeshFiles::read(dir, "d.1").nodes.size() == 3);
+}
+
+TEST_CASE("Triangle's classic samples mesh with -pq and pass -C", "[cli][samples]") {
+    const auto shared = shared_samples();
+    if (shared.empty()) {
+        WARN("../shared/samples is absent: skipped");
+        return;
+    }
+    for (const auto& entry : std::filesystem::directory_iterator(shared)) {
+        const std::string name = entry.path().filename().string();
+        if (entry.path().extension() != ".poly") continue;
+        DYNAMIC_SECTION(name) {
+            TempDir dir;
+            std::filesystem::copy(entry.path(), dir / name);
+            // box.poly's only closed loop is its hole: without -c, Triangle
+            // eats every triangle; with -c it meshes the hull.
+            const auto r = run_gpdr(dir, "-pcqCQ " + name);
+            require_checked(r);
+            const auto r2 = run_gpdr(dir, "-pqa0.5CQ " + name);
+            INFO(r2.err);
+            CHECK(r2.status == 0);
+        }
+    }
+}

@@ -12,6 +12,7 @@
 
 #include "api/job_stages.hpp"
 #include "mesh/checker.hpp"
+#include "mesh/traverse.hpp"
 #include "refine/refine.hpp"
 #include "triangulate/conformity.hpp"
 
@@ -94,6 +95,9 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
         settings.criteria.triangle_max_area = tri.area_bounds.get();
         settings.criteria.diametral_circles = options.conforming_delaunay;
         settings.segment_ends = tri.segment_ends;
+        // Each record costs 40 bytes per new vertex: keep them only when
+        // there are vertex attributes to interpolate.
+        settings.record_new_vertices = input.nodes.data.attribute_count > 0;
         if (settings.steiner_limit)
             settings.max_steiner = settings.max_steiner > tri.steiner_points ? settings.max_steiner - tri.steiner_points : 0;
         api::warn_before_refinement(options, warn);
@@ -114,14 +118,17 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
     }
 
     // Write.
+    // Neighbours cost 12 bytes per triangle: only the outputs that are
+    // derived from them get them.
+    const bool neighbours = options.write_neighbours || options.write_edges || options.write_voronoi ||
+                            options.write_off || options.order == 2;
     api::MeshArrays arrays = api::mesh_to_arrays(tri.mesh, std::move(input.nodes.data), tri.new_vertices,
-                                                 tri.triangle_attribute_count, tri.region_attributes);
+                                                 tri.triangle_attribute_count, tri.region_attributes, neighbours);
     tri.new_vertices = {};
-    const api::EdgeCounts edges = api::count_edges(arrays);
     result.vertices = arrays.nodes.size() - tri.duplicates;
     result.triangles = arrays.triangles.size();
-    result.edges = edges.edges;
-    result.hull_edges = edges.boundary;
+    result.hull_edges = mesh::count_hull_edges(tri.mesh);
+    result.edges = (3 * result.triangles + result.hull_edges) / 2;  // each edge has two sides but the hull's
     result.segments = tri.mesh.subsegments().size();
     std::vector<std::string> quality;
     if (options.verbosity > 0) quality = api::quality_statistics(arrays);  // before -o2

@@ -79,9 +79,10 @@ void warn_after_refinement(const refine::RefineReport& report, const WarningSink
 // kept, otherwise a vertex on a subsegment takes its marker, otherwise a
 // vertex on the boundary gets 1 and any other 0.
 // Triangles get `attribute_count` attributes each from `region_attributes`
-// by their region index.
+// by their region index.  The neighbour array is filled only when asked for.
 MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::span<const refine::NewVertex> added,
-                          std::uint32_t attribute_count, std::span<const double> region_attributes);
+                          std::uint32_t attribute_count, std::span<const double> region_attributes,
+                          bool with_neighbours);
 
 // The marker of mesh edge {a, b} (Triangle's rules): a subsegment's own
 // marker if non-zero, else 1 on the boundary, else 0.

@@ -54,7 +54,8 @@ void interpolate_attributes(const mesh::Mesh& mesh, NodeSet& nodes, const std::v
 }  // namespace
 
 MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::span<const refine::NewVertex> added,
-                          std::uint32_t attribute_count, std::span<const double> region_attributes) {
+                          std::uint32_t attribute_count, std::span<const double> region_attributes,
+                          bool with_neighbours) {
     MeshArrays out;
 
     // Vertex numbers: the input vertices keep theirs (duplicates included,
@@ -79,19 +80,25 @@ MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::span<const
     interpolate_attributes(mesh, nodes, number, added);
 
     // Triangles, compactly numbered in id order.
-    const std::uint32_t slots = mesh.triangle_end();
-    std::vector<std::uint32_t> triangle_number(slots, none);
+    std::vector<std::uint32_t> triangle_number;
     std::uint32_t count = 0;
-    mesh::for_each_triangle(mesh, [&](mesh::TriangleId id, const mesh::Triangle&) { triangle_number[index(id)] = count++; });
+    if (with_neighbours) {
+        triangle_number.assign(mesh.triangle_end(), none);
+        mesh::for_each_triangle(mesh, [&](mesh::TriangleId id, const mesh::Triangle&) { triangle_number[index(id)] = count++; });
+        out.neighbours.neighbours.reserve(3 * std::size_t{count});
+    } else {
+        mesh::for_each_triangle(mesh, [&](mesh::TriangleId, const mesh::Triangle&) { ++count; });
+    }
     out.triangles.corners_per_triangle = 3;
     out.triangles.corners.reserve(3 * std::size_t{count});
-    out.neighbours.neighbours.reserve(3 * std::size_t{count});
     out.triangles.attribute_count = attribute_count;
     out.triangles.attributes.reserve(std::size_t{attribute_count} * count);
     mesh::for_each_triangle(mesh, [&](mesh::TriangleId, const mesh::Triangle& t) {
         for (int k = 0; k < 3; ++k) {
             out.triangles.corners.push_back(number[index(t.v[k])]);
-            out.neighbours.neighbours.push_back(t.n[k].is_none() ? none : triangle_number[index(t.n[k].triangle())]);
+            if (with_neighbours)
+                out.neighbours.neighbours.push_back(t.n[k].is_none() ? none
+                                                                     : triangle_number[index(t.n[k].triangle())]);
         }
         const std::size_t row = std::size_t{t.region} * attribute_count;
         for (std::uint32_t i = 0; i < attribute_count; ++i)

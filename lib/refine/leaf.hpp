@@ -23,12 +23,13 @@
 //
 // Within one σ level the order is free as far as Miller's bound goes, and it
 // matters a great deal for the size of the mesh above 25 degrees: the worst
-// shaped triangles first, oldest first among equals (Triangle's order)
-// gives meshes within a few percent of Triangle's, where last-in-first-out
-// gave up to four times as many triangles at 33 degrees.  So each level
-// holds rank_count first-in-first-out queues by shape rank
-// (QualityTest::shape_rank, 0 = worst).  Levels are allocated on first use,
-// so a leaf that never sees a level costs a null pointer for it.
+// shaped triangles first (Triangle's order) gives meshes within a few
+// percent of Triangle's up to 30 degrees, where plain last-in-first-out gave
+// up to four times as many triangles at 33 degrees.  So each level holds
+// rank_count stacks by shape rank (QualityTest::shape_rank, 0 = worst).
+// Within a stack the newest goes first: it was just created, so it is still
+// in the cache (first-in-first-out was 1.6 times slower, for 1% fewer
+// triangles at 20 degrees).  Levels are allocated on first use, so a leaf that never sees a level costs a null pointer for it.
 
 #include <cmath>
 #include <array>
@@ -55,7 +56,7 @@ struct QueuedSubsegment {
 class Leaf {
 public:
     static constexpr int bucket_count = 128;
-    static constexpr int rank_count = 16;
+    static constexpr int rank_count = 64;
     using OwnsPoint = bool (*)(const void* context, const geometry::Point& p);
 
     explicit Leaf(double side = 1.0) : side_squared_(side * side), side_(side) {}
@@ -80,7 +81,7 @@ public:
     void push_poor(QueuedTriangle q, int level, int rank = 0) {
         auto& l = levels_[level];
         if (!l) l = std::make_unique<Level>();
-        l->ranks[rank].items.push_back(q);
+        l->ranks[rank].push_back(q);
         ++l->entries;
         if (rank < l->lowest_rank) l->lowest_rank = rank;
         if (level < lowest_) lowest_ = level;
@@ -91,14 +92,14 @@ public:
         while (lowest_ < bucket_count && (!levels_[lowest_] || levels_[lowest_]->entries == 0)) ++lowest_;
         return lowest_ < bucket_count ? lowest_ : -1;
     }
-    // Takes from level j the oldest entry of the worst shape rank.
+    // Takes from level j the newest entry of the worst shape rank.
     bool pop_poor(int j, QueuedTriangle& q) {
         Level* l = levels_[j].get();
         if (!l || l->entries == 0) return false;
         while (l->ranks[l->lowest_rank].empty()) ++l->lowest_rank;
-        Fifo& f = l->ranks[l->lowest_rank];
-        q = f.items[f.head++];
-        if (f.empty()) f.clear();
+        std::vector<QueuedTriangle>& stack = l->ranks[l->lowest_rank];
+        q = stack.back();
+        stack.pop_back();
         if (--l->entries == 0) l->lowest_rank = rank_count;
         --poor_entries_;
         return true;
@@ -125,18 +126,8 @@ public:
 private:
     double side_squared_;
     double side_;
-    // A first-in-first-out queue that reuses its storage once drained.
-    struct Fifo {
-        std::vector<QueuedTriangle> items;
-        std::size_t head = 0;
-        bool empty() const { return head == items.size(); }
-        void clear() {
-            items.clear();
-            head = 0;
-        }
-    };
     struct Level {
-        std::array<Fifo, rank_count> ranks;
+        std::array<std::vector<QueuedTriangle>, rank_count> ranks;
         int lowest_rank = rank_count;
         std::size_t entries = 0;
     };

@@ -99,7 +99,7 @@ TEST_CASE("refining box.1 writes box.2", "[api][file_names]") {
     }
 }
 
-TEST_CASE("-I drops the iteration number and never writes .poly", "[api][file_names]") {
+TEST_CASE("switch -I drops the iteration number and never writes .poly", "[api][file_names]") {
     Options o;
     o.no_iteration_numbers = true;
     o.input = "./dir.v2/box.poly";
@@ -112,7 +112,7 @@ TEST_CASE("-I drops the iteration number and never writes .poly", "[api][file_na
     CHECK(f.out_poly.empty());  // it would replace the input .poly
 }
 
-TEST_CASE("-I is refused when refining, as Triangle refuses it", "[api][file_names]") {
+TEST_CASE("switch -I is refused when refining, as Triangle refuses it", "[api][file_names]") {
     Options o;
     o.no_iteration_numbers = true;
     o.input = "box.1";

@@ -146,12 +146,12 @@ void round_trip(const fs::path& input, bool convex_hull) {
 
 }  // namespace
 
-TEST_CASE("-rp round trip: the project's samples", "[api][refine]") {
+TEST_CASE("switch -rp round trip: the project's samples", "[api][refine]") {
     for (const char* name : {"flow.poly", "pipe.poly"})
         for (bool hull : {false, true}) round_trip(test::project_samples() / name, hull);
 }
 
-TEST_CASE("-rp round trip: Triangle's classic samples", "[api][refine]") {
+TEST_CASE("switch -rp round trip: Triangle's classic samples", "[api][refine]") {
     const auto samples = test::shared_samples();
     if (samples.empty()) {
         WARN("SKIPPED: ../shared/samples is absent");

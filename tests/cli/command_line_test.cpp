@@ -163,7 +163,7 @@ TEST_CASE("a run prints each file it wrote; -Q silences it", "[cli][command_line
     CHECK(threads.err.empty());
 }
 
-TEST_CASE("-V prints statistics, -C the check's verdict", "[cli][command_line]") {
+TEST_CASE("switch -V prints statistics, -C the check's verdict", "[cli][command_line]") {
     TempDir dir;
     dir.write("sq.node", square_node);
     const auto plain = run_gpdr(dir, "sq.node");

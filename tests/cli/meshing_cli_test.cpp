@@ -47,7 +47,7 @@ void require_checked(const RunResult& r) {
 
 }  // namespace
 
-TEST_CASE("-pq meets the angle bound on the project's samples", "[cli][quality]") {
+TEST_CASE("switch -pq meets the angle bound on the project's samples", "[cli][quality]") {
     const auto angle = GENERATE(20, 30, 33);
     const std::string sample = GENERATE(as<std::string>{}, "flow.poly", "pipe.poly");
     TempDir dir;
@@ -68,7 +68,7 @@ TEST_CASE("-pq meets the angle bound on the project's samples", "[cli][quality]"
     CHECK(smallest >= angle - 1e-9);
 }
 
-TEST_CASE("-a bounds every triangle's area; regions set attributes and bounds", "[cli][quality]") {
+TEST_CASE("switch -a bounds every triangle's area; regions set attributes and bounds", "[cli][quality]") {
     TempDir dir;
     dir.write("r.poly", two_regions);
     SECTION("global bound") {
@@ -102,7 +102,7 @@ TEST_CASE("-a bounds every triangle's area; regions set attributes and bounds", 
     }
 }
 
-TEST_CASE("-p then -rp leaves the mesh unchanged; -rq refines it further", "[cli][refine]") {
+TEST_CASE("switch -p then -rp leaves the mesh unchanged; -rq refines it further", "[cli][refine]") {
     TempDir dir;
     // flow.poly has no input angle below 90 degrees: no triangle is exempt
     // from the angle bound.
@@ -120,7 +120,7 @@ TEST_CASE("-p then -rp leaves the mesh unchanged; -rq refines it further", "[cli
     }
 }
 
-TEST_CASE("-c, -e, -n, -v, -o2 and -j write what Triangle writes", "[cli][outputs]") {
+TEST_CASE("switch -c, -e, -n, -v, -o2 and -j write what Triangle writes", "[cli][outputs]") {
     TempDir dir;
     dir.write("p.node", sample_text("points.node"));
     require_checked(run_gpdr(dir, "-cenvo2C p.node"));

@@ -108,7 +108,7 @@ void require_graded(const GradedMesh& m, double c) {
 
 }  // namespace
 
-TEST_CASE("--unsuitable grades the pipe with the paper's function", "[cli][plugin]") {
+TEST_CASE("switch --unsuitable grades the pipe with the paper's function", "[cli][plugin]") {
     if (!have_c_compiler()) {
         WARN("no C compiler (cc) on the PATH: --unsuitable is not tested");
         return;
@@ -151,7 +151,7 @@ TEST_CASE("--unsuitable grades the pipe with the paper's function", "[cli][plugi
     }
 }
 
-TEST_CASE("--unsuitable: unloadable libraries are clear errors", "[cli][plugin]") {
+TEST_CASE("switch --unsuitable: unloadable libraries are clear errors", "[cli][plugin]") {
     TempDir dir;
     fs::copy_file(project_samples() / "pipe.poly", dir / "pipe.poly");
 

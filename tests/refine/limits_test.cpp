@@ -92,7 +92,7 @@ TEST_CASE("the user test is applied after the area checks", "[refine][criteria]"
     });
 }
 
-TEST_CASE("-Y keeps boundary subsegments whole, -YY every subsegment", "[refine][limits]") {
+TEST_CASE("switch -Y keeps boundary subsegments whole, -YY every subsegment", "[refine][limits]") {
     SECTION("-Y on a point set") {
         mesh::Mesh m = point_set_mesh(random_points(60, 4));
         const std::size_t hull = mesh::count_hull_edges(m);
@@ -127,7 +127,7 @@ TEST_CASE("-Y keeps boundary subsegments whole, -YY every subsegment", "[refine]
     }
 }
 
-TEST_CASE("-S caps the Steiner points and the report says what is left", "[refine][limits]") {
+TEST_CASE("switch -S caps the Steiner points and the report says what is left", "[refine][limits]") {
     mesh::Mesh m = point_set_mesh(random_points(60, 8));
     RefineSettings settings;
     settings.criteria.min_angle_degrees = 30;

@@ -4,7 +4,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include <gpdr/errors.hpp>
@@ -300,4 +302,37 @@ TEST_CASE("random long segments with many crossings", "[triangulate][cdt][random
         require_valid(m, pslg, report);
         CHECK(!report.new_vertices.empty());
     }
+}
+
+TEST_CASE("benchmark: CDT of a 1-million-segment star polygon with islands", "[.bench][triangulate][cdt]") {
+    // A star-shaped polygon (random radius per angle step) and 1000 small
+    // square islands inside it: the radii jitter, so most segments are not
+    // Delaunay edges of the points and must be forced in.
+    const std::uint32_t n = 1'000'000;
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> radius(0.7, 1.0);
+    Pslg pslg;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const double a = 2 * M_PI * i / n;
+        const double r = radius(rng) * 100;
+        pslg.points.push_back({r * std::cos(a), r * std::sin(a)});
+        pslg.segments.insert(pslg.segments.end(), {i, (i + 1) % n});
+    }
+    for (int k = 0; k < 1000; ++k) {
+        const double cx = -40 + 80 * double(k % 32) / 32, cy = -40 + 80 * double(k / 32) / 32, h = 0.5;
+        const auto base = static_cast<std::uint32_t>(pslg.points.size());
+        pslg.points.insert(pslg.points.end(), {{cx - h, cy - h}, {cx + h, cy - h}, {cx + h, cy + h}, {cx - h, cy + h}});
+        for (std::uint32_t j = 0; j < 4; ++j) pslg.segments.insert(pslg.segments.end(), {base + j, base + (j + 1) % 4});
+        pslg.holes.push_back({cx, cy});
+    }
+    using clock = std::chrono::steady_clock;
+    CdtReport report;
+    const auto t0 = clock::now();
+    const Mesh m = constrained_delaunay(pslg, {}, report);
+    const auto t1 = clock::now();
+    std::printf("CDT of %zu vertices, %zu segments: %.3f s, %zu triangles, %zu subsegments\n", pslg.points.size(),
+                pslg.segment_count(), std::chrono::duration<double>(t1 - t0).count(), m.count_triangles(),
+                m.subsegments().size());
+    CHECK(m.subsegments().size() == pslg.segment_count());
+    CHECK(report.new_vertices.empty());
 }

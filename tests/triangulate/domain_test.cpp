@@ -44,7 +44,7 @@ TEST_CASE("a square hole eats exactly the triangles inside it", "[triangulate][d
     CHECK(gpdr::mesh::count_hull_edges(m) == 8);
 }
 
-TEST_CASE("-O ignores the holes", "[triangulate][domain]") {
+TEST_CASE("switch -O ignores the holes", "[triangulate][domain]") {
     const Pslg pslg = square_with_square({{1.5, 1.5}});
     CdtReport report;
     CdtOptions options;

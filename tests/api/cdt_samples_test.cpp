@@ -1,0 +1,82 @@
+// Every .poly sample (Triangle's classic ones in ../shared/samples and the
+// project's poly-samples) through the CDT, with and without -c and -O: the
+// result passes check_mesh and the segment conformity check.
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gpdr/io.hpp>
+
+#include "cli/cli_support.hpp"
+#include "mesh/checker.hpp"
+#include "triangulate/conformity.hpp"
+#include "triangulate/constrained.hpp"
+
+using namespace gpdr;
+namespace fs = std::filesystem;
+
+namespace {
+
+triangulate::Pslg to_pslg(const PolyFile& poly) {
+    triangulate::Pslg p;
+    for (std::size_t i = 0; i < poly.nodes.size(); ++i) p.points.push_back({poly.nodes.xy[2 * i], poly.nodes.xy[2 * i + 1]});
+    p.segments = poly.segments.endpoints;
+    p.segment_markers = poly.segments.markers;
+    for (std::size_t i = 0; i + 1 < poly.holes.size(); i += 2) p.holes.push_back({poly.holes[i], poly.holes[i + 1]});
+    p.regions = poly.regions;
+    return p;
+}
+
+std::vector<fs::path> poly_files(const fs::path& folder) {
+    std::vector<fs::path> out;
+    if (folder.empty() || !fs::is_directory(folder)) return out;
+    for (const auto& e : fs::directory_iterator(folder))
+        if (e.path().extension() == ".poly") out.push_back(e.path());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+void check_samples(const std::vector<fs::path>& files) {
+    for (const fs::path& file : files) {
+        const auto read = io::read_poly(file.string(), ignore_warning);
+        const triangulate::Pslg pslg = to_pslg(read.data);
+        for (int variant = 0; variant < 4; ++variant) {
+            triangulate::CdtOptions options;
+            options.convex_hull = (variant & 1) != 0;
+            options.ignore_holes = (variant & 2) != 0;
+            triangulate::CdtReport report;
+            const mesh::Mesh m = triangulate::constrained_delaunay(pslg, options, report);
+            INFO(file.filename().string() << " convex_hull=" << options.convex_hull
+                                          << " ignore_holes=" << options.ignore_holes);
+            if (options.convex_hull) CHECK(m.count_triangles() > 0);  // box.poly without -c is all eaten
+            const auto problems = mesh::check_mesh(m);
+            for (const auto& p : problems) INFO(p);
+            CHECK(problems.empty());
+            const auto conformity = triangulate::check_conformity(m, pslg, report);
+            for (const auto& p : conformity) INFO(p);
+            CHECK(conformity.empty());
+        }
+    }
+}
+
+}  // namespace
+
+TEST_CASE("Triangle's sample PSLGs triangulate into valid conforming CDTs", "[api][cdt][samples]") {
+    const fs::path shared = test::shared_samples();
+    if (shared.empty()) {
+        WARN("../shared/samples is absent: Triangle's samples not checked");
+        return;
+    }
+    const auto files = poly_files(shared);
+    CHECK(!files.empty());
+    check_samples(files);
+}
+
+TEST_CASE("the project's sample PSLGs triangulate into valid conforming CDTs", "[api][cdt][samples]") {
+    const auto files = poly_files(fs::path(GPDR_SOURCE_DIR) / "poly-samples");
+    REQUIRE(!files.empty());
+    check_samples(files);
+}

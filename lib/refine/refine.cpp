@@ -305,10 +305,21 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q) {
             leaf.push_poor(q, leaf.sigma(t.circle.radius_squared),
                            quality_.shape_rank(t.shortest_length * t.shortest_length, t.circle.radius_squared, Leaf::rank_count));
     };
+    // When a subsegment in the way belongs to another leaf (its split point
+    // lies outside), t goes with it instead of back into this leaf, which
+    // would take it again at once (parallel layer; never without a hook).
+    auto split_queued_subsegments_then_requeue = [&] {
+        const std::size_t handed = leaf.handed_off_subsegments.size();
+        split_queued_subsegments(leaf);
+        const mesh::Triangle& r = mesh_.triangle(q.id);
+        if (leaf.handed_off_subsegments.size() != handed && r.load_generation() == q.generation && r.live())
+            leaf.handed_off_triangles.push_back(q);
+        else
+            requeue_if_alive();
+    };
     auto split_instead = [&](EdgeRef e) {
         leaf.push_subsegment({e, mesh_.triangle(e.triangle()).generation, true});
-        split_queued_subsegments(leaf);
-        requeue_if_alive();
+        split_queued_subsegments_then_requeue();
     };
 
     // Where p lies, seen from t without crossing subsegments.
@@ -378,8 +389,7 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q) {
             give_up(q, reason_no_split);
             return;
         }
-        split_queued_subsegments(leaf);
-        requeue_if_alive();
+        split_queued_subsegments_then_requeue();
         return;
     }
     if (nearest <= t.circle.radius_squared * (tiny_fraction * tiny_fraction)) {

@@ -1,16 +1,19 @@
 #!/usr/bin/env bash
 # Sets up and builds gpdr (scripts/setup.sh), then runs its main job on a
-# bundled sample in a scratch folder (build/demo) and lists what it wrote.
-# (The job grows with gpdr: Delaunay triangulation of points for now.)
+# bundled sample in a scratch folder (build/demo) and lists what it wrote:
+# the pipe cross-section, quality-meshed with a 20 degree angle bound and
+# graded by the GPDR paper's function (10) (poly-samples/grading.c, loaded as
+# a run-time triunsuitable() plug-in).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 scripts/setup.sh >/dev/null
 rm -rf build/demo && mkdir -p build/demo
-cp poly-samples/points.node build/demo/
+cp poly-samples/pipe.poly build/demo/
+cc -O2 -shared -fPIC -o build/demo/grading.so poly-samples/grading.c
 cd build/demo
-echo "\$ gpdr -cen points.node"
-../gpdr -cen points.node
+echo "\$ gpdr -pq20 --unsuitable ./grading.so pipe.poly"
+../gpdr -pq20 --unsuitable ./grading.so pipe.poly
 echo
 echo "Files written in build/demo:"
-ls -l --time-style=+ | tail -n +2
+ls -l --time-style=+ pipe.1.* | awk '{print "  " $NF ": " $5 " bytes"}'

@@ -9,7 +9,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(cmake make g++ libcli11-dev libfmt-dev catch2 libgmp-dev)
+packages=(cmake make gcc g++ libcli11-dev libfmt-dev catch2 libgmp-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

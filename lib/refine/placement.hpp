@@ -9,10 +9,11 @@
 //
 //   circumcentre   Ruppert / Chew: the centre of the disk.
 //   off_centre     Üngör's off-centre (Triangle's default and gpdr's): on the
-//                  shortest edge's bisector, where the new triangle on that
-//                  edge has radius-edge ratio exactly rho_bar; the
-//                  circumcentre when that is nearer.  (Remark 2 of the
-//                  paper: inside the disk.)
+//                  shortest edge's bisector, 5% short of the point where the
+//                  new triangle on that edge has radius-edge ratio exactly
+//                  rho_bar (as Triangle does: at exactly rho_bar rounding
+//                  leaves the new triangle poor); the circumcentre when that
+//                  is nearer.  (Remark 2 of the paper: inside the disk.)
 //   optimisation   the paper's method: candidates on the arc Γ = (circle
 //                  through the shortest edge's ends and the off-centre) ∩
 //                  disk, 24 evenly spread plus the off-centre; each scored
@@ -21,15 +22,15 @@
 //                  the off-centre.  The cavity is found by a read-only search
 //                  from the poor triangle that never crosses a subsegment.
 //
-// Contract of place(): return a point strictly inside t.disk.  The refiner
-// calls a strategy only when t.disk.radius > 0; when the disk is empty
-// (r <= sqrt(2) l: an angle bound above 20.7 degrees, or a triangle that is
-// only too big) the refiner inserts the circumcentre itself.  In checked
-// mode (RefineSettings::checked, on by default in debug builds and in the
-// tests) the refiner verifies every returned point and throws gpdr::Error
-// naming the strategy if it is outside.  A built-in strategy whose
-// construction rounds out of the disk returns the circumcentre instead.
-//
+// Contract of place(): return an admissible point (admissible_point below):
+// strictly inside t.disk when the disk is not empty; when it is empty
+// (r <= sqrt(2) l: a triangle poor only by its size, or most poor triangles
+// under an angle bound above 20.7 degrees, where the paper's guarantee does
+// not reach) strictly inside the circumcircle, so that the point destroys t.
+// In checked mode (RefineSettings::checked, on by default in debug builds
+// and in the tests) the refiner verifies every returned point and throws
+// gpdr::Error naming the strategy if it is not admissible.
+
 // Writing a strategy: derive from PlacementStrategy, implement place() and
 // name(), pass a pointer in RefineSettings::strategy.  place() is called from
 // several threads at once when refinement runs in parallel: it must not
@@ -56,7 +57,7 @@ struct PoorTriangle {
     int shortest_edge = 0;         // index of the shortest edge (opposite that corner)
     double shortest_length = 0;    // l
     double rho_bar = 0;            // the radius-edge bound (+infinity: no angle test)
-    geometry::Disk disk;           // the selection disk, radius > 0
+    geometry::Disk disk;           // the selection disk (radius <= 0: empty)
     const QualityTest* quality = nullptr;  // for strategies that judge neighbours
 };
 
@@ -73,7 +74,7 @@ struct PlacementScratch {
 class PlacementStrategy {
 public:
     virtual ~PlacementStrategy() = default;
-    // A point strictly inside t.disk (see the contract above).
+    // An admissible point for t (see the contract above).
     virtual geometry::Point place(const PoorTriangle& t, PlacementScratch& scratch) const = 0;
     virtual const char* name() const = 0;
 };

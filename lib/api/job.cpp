@@ -85,6 +85,8 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
 
     // Triangulate.
     api::Triangulated tri = api::triangulate_input(options, input, warn);
+    // The mesh holds the coordinates now (mesh_to_arrays takes them back).
+    input.nodes.data.xy = {};
     result.triangulate_seconds = clock.lap();
 
     // Refine.
@@ -122,7 +124,8 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
     // derived from them get them.
     const bool neighbours = options.write_neighbours || options.write_edges || options.write_voronoi ||
                             options.write_off || options.order == 2;
-    api::MeshArrays arrays = api::mesh_to_arrays(tri.mesh, std::move(input.nodes.data), tri.new_vertices,
+    api::MeshArrays arrays = api::mesh_to_arrays(tri.mesh, std::move(input.nodes.data), result.input_vertices,
+                                                 tri.new_vertices,
                                                  tri.triangle_attribute_count, tri.region_attributes, neighbours);
     tri.new_vertices = {};
     result.vertices = arrays.nodes.size() - tri.duplicates;

@@ -53,15 +53,21 @@ void interpolate_attributes(const mesh::Mesh& mesh, NodeSet& nodes, const std::v
 
 }  // namespace
 
-MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::span<const refine::NewVertex> added,
+MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t input_count,
+                          std::span<const refine::NewVertex> added,
                           std::uint32_t attribute_count, std::span<const double> region_attributes,
                           bool with_neighbours) {
     MeshArrays out;
 
     // Vertex numbers: the input vertices keep theirs (duplicates included,
     // as Triangle writes them); added vertices follow.
-    const std::size_t input_count = nodes.size();
     const std::uint32_t vertex_end = mesh.vertex_end();
+    nodes.xy.resize(2 * input_count);
+    for (std::uint32_t v = 0; v < input_count; ++v) {
+        const auto& p = mesh.point(mesh::VertexId{v});
+        nodes.xy[2 * std::size_t{v}] = p.x;
+        nodes.xy[2 * std::size_t{v} + 1] = p.y;
+    }
     std::vector<std::uint32_t> number(std::max<std::size_t>(vertex_end, input_count), none);
     out.mesh_ids.reserve(number.size());
     for (std::uint32_t v = 0; v < input_count; ++v) {

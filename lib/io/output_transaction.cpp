@@ -92,6 +92,8 @@ void OutputTransaction::File::finish(std::string_view command) {
     stream_ = nullptr;
     if (std::fclose(s) != 0) fail(errno, "cannot write");
     finished_ = true;
+    // A finished file waits for commit(); its buffer is not needed any more.
+    buffer_ = fmt::memory_buffer();
 }
 
 void OutputTransaction::File::discard() noexcept {

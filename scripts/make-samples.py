@@ -74,6 +74,9 @@ def flow():
         return [(p[0] + (q[0] - p[0]) * k / n, p[1] + (q[1] - p[1]) * k / n) for k in range(n)]
     arc = [(8 + math.cos(math.pi - math.pi * k / 160), math.sin(math.pi - math.pi * k / 160))
            for k in range(160)]
+    # sin(pi) is 1.2e-16 in floating point: put the arc's end exactly on the
+    # axis, or it leaves a 1e-15 radian angle against the axis segments.
+    arc[0] = (7.0, 0.0)
     outline = (line((0.0, 0.0), (7.0, 0.0), 70) + arc + line((9.0, 0.0), (30.0, 0.0), 210) +
                line((30.0, 0.0), (30.0, 10.0), 40) + line((30.0, 10.0), (0.0, 10.0), 120) +
                line((0.0, 10.0), (0.0, 0.0), 40))

@@ -141,25 +141,38 @@ TEST_CASE("switch -c, -e, -n, -v, -o2 and -j write what Triangle writes", "[cli]
     CHECK(MeshFiles::read(dir, "d.1").nodes.size() == 3);
 }
 
-TEST_CASE("Triangle's classic samples mesh with -pq and pass -C", "[cli][samples]") {
+namespace {
+
+// Every switch combination of issue 4 (-c, -D, -O, -A) and two refinements,
+// each checked by -C (topology, orientation, constrained Delaunay, segment
+// conformity), on every .poly in `folder`.
+void mesh_every_sample(const std::filesystem::path& folder) {
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+        const std::string name = entry.path().filename().string();
+        if (entry.path().extension() != ".poly") continue;
+        for (const char* switches : {"-pCQ", "-pcCQ", "-pDCQ", "-pcDCQ", "-pOCQ", "-pACQ", "-pcqCQ", "-pqa0.5CQ"}) {
+            DYNAMIC_SECTION(name << " " << switches) {
+                TempDir dir;
+                std::filesystem::copy(entry.path(), dir / name);
+                // box.poly's only closed loop is its hole: without -c,
+                // Triangle eats every triangle, and so does gpdr.
+                require_checked(run_gpdr(dir, std::string(switches) + " " + name));
+            }
+        }
+    }
+}
+
+}  // namespace
+
+TEST_CASE("Triangle's classic samples mesh with -p, -c, -D, -O, -A, -q and pass -C", "[cli][samples]") {
     const auto shared = shared_samples();
     if (shared.empty()) {
         WARN("../shared/samples is absent: skipped");
         return;
     }
-    for (const auto& entry : std::filesystem::directory_iterator(shared)) {
-        const std::string name = entry.path().filename().string();
-        if (entry.path().extension() != ".poly") continue;
-        DYNAMIC_SECTION(name) {
-            TempDir dir;
-            std::filesystem::copy(entry.path(), dir / name);
-            // box.poly's only closed loop is its hole: without -c, Triangle
-            // eats every triangle; with -c it meshes the hull.
-            const auto r = run_gpdr(dir, "-pcqCQ " + name);
-            require_checked(r);
-            const auto r2 = run_gpdr(dir, "-pqa0.5CQ " + name);
-            INFO(r2.err);
-            CHECK(r2.status == 0);
-        }
-    }
+    mesh_every_sample(shared);
+}
+
+TEST_CASE("the project's samples mesh with -p, -c, -D, -O, -A, -q and pass -C", "[cli][samples]") {
+    mesh_every_sample(project_samples());
 }

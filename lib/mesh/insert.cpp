@@ -43,18 +43,12 @@ void clear_marks(Mesh& mesh, const std::vector<TriangleId>& cavity) {
     for (TriangleId t : cavity) mesh.triangle(t).flags &= static_cast<std::uint8_t>(~Triangle::mark_bit);
 }
 
-// Steps 3 and 4.
-InsertResult bowyer_watson(Pool& pool, VertexId v, const LocateResult& where, InsertBuffer& buf) {
-    Mesh& mesh = pool.mesh();
-    const Point& p = mesh.point(v);
-    auto& cavity = buf.killed;
-    auto& boundary = buf.boundary;
-    cavity.clear();
-    boundary.clear();
-    buf.created.clear();
+}  // namespace
 
-    // Step 3: breadth-first search from the seed, `cavity` doubling as queue.
-    const TriangleId seed = where.triangle;
+// Step 3: breadth-first search from the seed, `cavity` doubling as queue.
+std::size_t find_cavity(Mesh& mesh, const Point& p, TriangleId seed, InsertBuffer& buf) {
+    auto& cavity = buf.killed;
+    cavity.clear();
     mesh.triangle(seed).flags |= Triangle::mark_bit;
     cavity.push_back(seed);
     std::size_t boundary_edges = 0;
@@ -76,6 +70,24 @@ InsertResult bowyer_watson(Pool& pool, VertexId v, const LocateResult& where, In
             }
         }
     }
+    buf.boundary_edges = boundary_edges;
+    return boundary_edges;
+}
+
+void abandon_cavity(Mesh& mesh, InsertBuffer& buf) {
+    clear_marks(mesh, buf.killed);
+    buf.killed.clear();
+}
+
+// Step 4, on the cavity find_cavity() left marked in buf.killed.
+InsertResult commit_cavity(Pool& pool, VertexId v, const LocateResult& where, InsertBuffer& buf) {
+    Mesh& mesh = pool.mesh();
+    auto& cavity = buf.killed;
+    auto& boundary = buf.boundary;
+    boundary.clear();
+    buf.created.clear();
+    const std::size_t boundary_edges = buf.boundary_edges;
+    const TriangleId seed = where.triangle;
 
     auto is_boundary = [&](const Triangle& t, int k) {
         const EdgeRef across = t.n[k];
@@ -145,6 +157,14 @@ InsertResult bowyer_watson(Pool& pool, VertexId v, const LocateResult& where, In
     }
     if (!open) mesh.link(EdgeRef(previous, 0), EdgeRef(buf.created.front(), 1));
     return {InsertStatus::inserted, v, EdgeRef::none()};
+}
+
+namespace {
+
+// Steps 3 and 4.
+InsertResult bowyer_watson(Pool& pool, VertexId v, const LocateResult& where, InsertBuffer& buf) {
+    find_cavity(pool.mesh(), pool.mesh().point(v), where.triangle, buf);
+    return commit_cavity(pool, v, where, buf);
 }
 
 }  // namespace

@@ -68,6 +68,7 @@ struct InsertBuffer {
         bool subsegment;
     };
     std::vector<BoundaryEdge> boundary;
+    std::size_t boundary_edges = 0;  // of the cavity find_cavity() found
 };
 
 // Inserts vertex v (already in the mesh store) at its point.
@@ -81,6 +82,22 @@ InsertResult insert_point(Pool& pool, const Point& p, VertexKind kind, TriangleI
 // Steps 2–4 with the location already known (`where` from locate(p)).
 // Vertex v must lie at p.
 InsertResult insert_located(Pool& pool, VertexId v, const LocateResult& where, InsertBuffer& buffer);
+
+// Steps 3 and 4 apart, for a caller that must look at the cavity before it
+// decides (refinement rejects a Steiner point that encroaches a subsegment
+// on its cavity's boundary):
+//   find_cavity   marks the cavity of p grown from `seed` (a triangle that
+//                 contains p; never crossing a subsegment) and lists it in
+//                 buffer.killed; changes nothing else.  Returns the number
+//                 of cavity boundary edges.
+//   abandon_cavity  clears the marks: the mesh is as before.
+//   commit_cavity   inserts v (already in the store, at p; `where` as given
+//                 by locate(p), with where.triangle the seed) into the
+//                 cavity found, as insert_located would.
+// Between find_cavity and commit/abandon nothing else may change the mesh.
+std::size_t find_cavity(Mesh& mesh, const Point& p, TriangleId seed, InsertBuffer& buffer);
+void abandon_cavity(Mesh& mesh, InsertBuffer& buffer);
+InsertResult commit_cavity(Pool& pool, VertexId v, const LocateResult& where, InsertBuffer& buffer);
 
 // Whether p lies strictly inside the circumcircle of live triangle t (for a
 // ghost triangle: strictly beyond its edge, or inside the open edge).

@@ -350,33 +350,24 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q) {
         }
     }
 
-    // The cavity of p (marks, cleared below): subsegments on its boundary
-    // that p encroaches, and the nearest vertex.
-    cavity_.clear();
+    // The cavity of p, found once: searched here for subsegments on its
+    // boundary that p encroaches and for the nearest vertex, then either
+    // abandoned or filled (commit_cavity, without a second search).
+    mesh::find_cavity(mesh_, p, where.triangle, buffer_);
     blocking_.clear();
     double nearest = std::numeric_limits<double>::infinity();
-    mesh_.triangle(where.triangle).flags |= mesh::Triangle::mark_bit;
-    cavity_.push_back(where.triangle);
-    for (std::size_t i = 0; i < cavity_.size(); ++i) {
-        const mesh::Triangle& r = mesh_.triangle(cavity_[i]);
+    for (const TriangleId id : buffer_.killed) {
+        const mesh::Triangle& r = mesh_.triangle(id);
         for (int k = 0; k < 3; ++k) {
-            const Point& corner = mesh_.point(r.v[k]);
-            nearest = std::min(nearest, geometry::squared_distance(corner, p));
-            if (r.is_subsegment(k)) {
-                if (encroaches(mesh_.point(r.v[mesh::next3(k)]), mesh_.point(r.v[mesh::prev3(k)]), p,
-                               quality_.encroachment_lens()))
-                    blocking_.push_back(EdgeRef(cavity_[i], k));
-                continue;
-            }
-            const EdgeRef across = r.n[k];
-            if (across.is_none()) continue;
-            mesh::Triangle& u = mesh_.triangle(across.triangle());
-            if (u.marked() || !mesh::in_circumcircle(mesh_, u, p)) continue;
-            u.flags |= mesh::Triangle::mark_bit;
-            cavity_.push_back(across.triangle());
+            nearest = std::min(nearest, geometry::squared_distance(mesh_.point(r.v[k]), p));
+            if (r.is_subsegment(k) && encroaches(mesh_.point(r.v[mesh::next3(k)]), mesh_.point(r.v[mesh::prev3(k)]),
+                                                 p, quality_.encroachment_lens()))
+                blocking_.push_back(EdgeRef(id, k));
         }
     }
-    for (TriangleId id : cavity_) mesh_.triangle(id).flags &= static_cast<std::uint8_t>(~mesh::Triangle::mark_bit);
+    const bool insert = blocking_.empty() &&
+                        nearest > t.circle.radius_squared * (tiny_fraction * tiny_fraction) && budget_left();
+    if (!insert) mesh::abandon_cavity(mesh_, buffer_);
 
     if (!blocking_.empty()) {
         bool any = false;
@@ -396,7 +387,7 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q) {
         give_up(q, reason_precision);
         return;
     }
-    if (!budget_left()) {
+    if (!insert) {  // the budget ran out
         leaf.push_poor(q, leaf.sigma(t.circle.radius_squared),
                            quality_.shape_rank(t.shortest_length * t.shortest_length, t.circle.radius_squared, Leaf::rank_count));
         return;
@@ -408,7 +399,7 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q) {
     const double bound = bounds ? bounds->get(where.triangle) : 0.0;
 
     const VertexId v = pool_.new_vertex(p, mesh::VertexKind::free);
-    const mesh::InsertResult result = mesh::insert_located(pool_, v, where, buffer_);
+    const mesh::InsertResult result = mesh::commit_cavity(pool_, v, where, buffer_);
     if (result.status != mesh::InsertStatus::inserted)
         throw Error("refine: a located Steiner point was refused by insertion (vertex " +
                     std::to_string(mesh::index(v)) + ")");

@@ -205,7 +205,6 @@ private:
     RefineReport& report_;
     mesh::InsertBuffer buffer_;
     PlacementScratch scratch_;
-    std::vector<mesh::TriangleId> cavity_;
     std::vector<mesh::EdgeRef> blocking_;
     std::vector<GivenUp> given_up_;
     MeshObserver* observer_ = nullptr;

@@ -74,12 +74,9 @@ void triangulate_points(const Options& options, Input& in, Triangulated& out, co
 
 void triangulate_pslg(const Options& options, Input& in, Triangulated& out, const WarningSink& warn) {
     const PolyFile& poly = *in.poly;
-    triangulate::Pslg& pslg = out.pslg.emplace();
+    // The vertices were moved from the PolyFile into in.nodes.
+    triangulate::Pslg& pslg = out.pslg.emplace(triangulate::pslg_from(poly));
     pslg.points = points_of(in.nodes.data);
-    pslg.segments = poly.segments.endpoints;
-    pslg.segment_markers = poly.segments.markers;
-    for (std::size_t i = 0; i + 1 < poly.holes.size(); i += 2) pslg.holes.push_back({poly.holes[i], poly.holes[i + 1]});
-    pslg.regions = poly.regions;
     triangulate::CdtOptions cdt;
     cdt.convex_hull = options.convex_hull;
     cdt.ignore_holes = options.ignore_holes;

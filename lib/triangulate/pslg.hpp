@@ -63,4 +63,8 @@ struct CdtReport {
     std::vector<bool> skipped;
 };
 
+// The PSLG a .poly file describes (its vertices, segments with markers,
+// holes and regions), with the vertices as Points.
+Pslg pslg_from(const PolyFile& poly);
+
 }  // namespace gpdr::triangulate

@@ -20,16 +20,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-triangulate::Pslg to_pslg(const PolyFile& poly) {
-    triangulate::Pslg p;
-    for (std::size_t i = 0; i < poly.nodes.size(); ++i) p.points.push_back({poly.nodes.xy[2 * i], poly.nodes.xy[2 * i + 1]});
-    p.segments = poly.segments.endpoints;
-    p.segment_markers = poly.segments.markers;
-    for (std::size_t i = 0; i + 1 < poly.holes.size(); i += 2) p.holes.push_back({poly.holes[i], poly.holes[i + 1]});
-    p.regions = poly.regions;
-    return p;
-}
-
 std::vector<fs::path> poly_files(const fs::path& folder) {
     std::vector<fs::path> out;
     if (folder.empty() || !fs::is_directory(folder)) return out;
@@ -42,7 +32,7 @@ std::vector<fs::path> poly_files(const fs::path& folder) {
 void check_samples(const std::vector<fs::path>& files) {
     for (const fs::path& file : files) {
         const auto read = io::read_poly(file.string(), ignore_warning);
-        const triangulate::Pslg pslg = to_pslg(read.data);
+        const triangulate::Pslg pslg = triangulate::pslg_from(read.data);
         for (int variant = 0; variant < 4; ++variant) {
             triangulate::CdtOptions options;
             options.convex_hull = (variant & 1) != 0;

@@ -64,22 +64,12 @@ std::set<Sub> subsegments(const Mesh& m) {
     return out;
 }
 
-triangulate::Pslg to_pslg(const PolyFile& poly) {
-    triangulate::Pslg p;
-    for (std::size_t i = 0; i < poly.nodes.size(); ++i) p.points.push_back({poly.nodes.xy[2 * i], poly.nodes.xy[2 * i + 1]});
-    p.segments = poly.segments.endpoints;
-    p.segment_markers = poly.segments.markers;
-    for (std::size_t i = 0; i + 1 < poly.holes.size(); i += 2) p.holes.push_back({poly.holes[i], poly.holes[i + 1]});
-    p.regions = poly.regions;
-    return p;
-}
-
 // -p and -pc; a PSLG whose segments enclose nothing (box.poly without -c)
 // has no mesh to write and is skipped.
 void round_trip(const fs::path& input, bool convex_hull) {
     INFO(input.string() << (convex_hull ? " with -c" : ""));
     const auto poly = io::read_poly(input.string(), ignore_warning);
-    const triangulate::Pslg pslg = to_pslg(poly.data);
+    const triangulate::Pslg pslg = triangulate::pslg_from(poly.data);
     triangulate::CdtReport cdt_report;
     triangulate::CdtOptions cdt_options;
     cdt_options.convex_hull = convex_hull;

@@ -30,16 +30,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-triangulate::Pslg pslg_of(const PolyFile& poly) {
-    triangulate::Pslg p;
-    for (std::size_t i = 0; i < poly.nodes.size(); ++i) p.points.push_back({poly.nodes.xy[2 * i], poly.nodes.xy[2 * i + 1]});
-    p.segments = poly.segments.endpoints;
-    p.segment_markers = poly.segments.markers;
-    for (std::size_t i = 0; i + 1 < poly.holes.size(); i += 2) p.holes.push_back({poly.holes[i], poly.holes[i + 1]});
-    p.regions = poly.regions;
-    return p;
-}
-
 // The smallest angle of triangle abc in degrees, computed independently of
 // the refiner (law of cosines).
 double smallest_angle(const geometry::Point& a, const geometry::Point& b, const geometry::Point& c) {
@@ -58,7 +48,7 @@ double smallest_angle(const geometry::Point& a, const geometry::Point& b, const 
 
 void refine_and_check(const fs::path& file) {
     const auto read = io::read_poly(file.string(), ignore_warning);
-    const triangulate::Pslg pslg = pslg_of(read.data);
+    const triangulate::Pslg pslg = triangulate::pslg_from(read.data);
     // Bounding-box area, for an area bound that makes a few hundred triangles.
     double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
     for (const auto& p : pslg.points) {

@@ -84,9 +84,7 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
     result.read_seconds = clock.lap();
 
     // Triangulate.
-    api::Triangulated tri = api::triangulate_input(options, input, warn);
-    // The mesh holds the coordinates now (mesh_to_arrays takes them back).
-    input.nodes.data.xy = {};
+    api::Triangulated tri = api::triangulate_input(options, input, warn);  // takes the coordinates
     result.triangulate_seconds = clock.lap();
 
     // Refine.
@@ -124,12 +122,14 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
     // derived from them get them.
     const bool neighbours = options.write_neighbours || options.write_edges || options.write_voronoi ||
                             options.write_off || options.order == 2;
+    // The triangle array itself only for what is derived from it.
+    const bool materialise = neighbours || options.jettison;
     api::MeshArrays arrays = api::mesh_to_arrays(tri.mesh, std::move(input.nodes.data), result.input_vertices,
-                                                 tri.new_vertices,
-                                                 tri.triangle_attribute_count, tri.region_attributes, neighbours);
+                                                 tri.new_vertices, tri.triangle_attribute_count,
+                                                 tri.region_attributes, neighbours, materialise);
     tri.new_vertices = {};
     result.vertices = arrays.nodes.size() - tri.duplicates;
-    result.triangles = arrays.triangles.size();
+    result.triangles = arrays.triangle_count;
     result.hull_edges = mesh::count_hull_edges(tri.mesh);
     result.edges = (3 * result.triangles + result.hull_edges) / 2;  // each edge has two sides but the hull's
     result.segments = tri.mesh.subsegments().size();

@@ -79,14 +79,16 @@ void warn_after_refinement(const refine::RefineReport& report, const WarningSink
 // kept, otherwise a vertex on a subsegment takes its marker, otherwise a
 // vertex on the boundary gets 1 and any other 0.
 // Triangles get `attribute_count` attributes each from `region_attributes`
-// by their region index.  The neighbour array is filled only when asked for.
+// by their region index.  The neighbour array is filled only when asked for;
+// without `materialise` the triangles stay in the mesh, which must then
+// outlive the arrays (MeshArrays::stream), and so must region_attributes.
 // The coordinates of all vertices come from the mesh, which keeps the input
 // ones exactly: the caller may free nodes.xy once the mesh is built, as long
 // as the other arrays of `nodes` keep their input_count entries.
 MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t input_count,
                           std::span<const refine::NewVertex> added,
                           std::uint32_t attribute_count, std::span<const double> region_attributes,
-                          bool with_neighbours);
+                          bool with_neighbours, bool materialise);
 
 // The marker of mesh edge {a, b} (Triangle's rules): a subsegment's own
 // marker if non-zero, else 1 on the boundary, else 0.

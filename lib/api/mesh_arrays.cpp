@@ -52,6 +52,17 @@ Circumcentre circumcentre_of(const MeshArrays& m, std::size_t t) {
 
 }  // namespace
 
+io::EleSource triangle_source(const MeshArrays& mesh) {
+    if (mesh.stream) return mesh.stream();
+    const EleSet& ele = mesh.triangles;
+    const std::uint32_t nc = ele.corners_per_triangle, na = ele.attribute_count;
+    return {ele.size(), nc, na, [&ele, nc, na, t = std::size_t{0}](std::uint32_t* corners, double* attributes) mutable {
+                std::copy_n(&ele.corners[t * nc], nc, corners);
+                std::copy_n(ele.attributes.data() + t * na, na, attributes);
+                ++t;
+            }};
+}
+
 EdgeSet edges_of(const MeshArrays& mesh, const EdgeMarker& marker) {
     EdgeSet edges;
     const EdgeCounts counts = count_edges(mesh);

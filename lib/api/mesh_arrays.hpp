@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -23,7 +24,17 @@ struct MeshArrays {
     // jettison_unused_vertices(); make_second_order() leaves the new midpoint
     // nodes out (they have no mesh vertex).
     std::vector<std::uint32_t> mesh_ids;
+    // Triangles may instead stay in the mesh until they are written
+    // (`triangles` is then empty): `stream` makes a source that reads them
+    // from the mesh in order, triangle_count of them.  It saves a copy of
+    // the mesh at the moment memory use peaks; outputs derived from the
+    // triangle array (-e -n -v -g -o2 -j) need them materialised.
+    std::size_t triangle_count = 0;
+    std::function<io::EleSource()> stream;
 };
+
+// The triangles of `mesh`, from the array or from the stream.
+io::EleSource triangle_source(const MeshArrays& mesh);
 
 // The marker of the edge joining vertices a and b: the caller knows which
 // edges are subsegments and what their markers are.  Called for every edge;

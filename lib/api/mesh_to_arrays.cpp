@@ -56,7 +56,7 @@ void interpolate_attributes(const mesh::Mesh& mesh, NodeSet& nodes, const std::v
 MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t input_count,
                           std::span<const refine::NewVertex> added,
                           std::uint32_t attribute_count, std::span<const double> region_attributes,
-                          bool with_neighbours) {
+                          bool with_neighbours, bool materialise) {
     MeshArrays out;
 
     // Vertex numbers: the input vertices keep theirs (duplicates included,
@@ -95,21 +95,40 @@ MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t inp
     } else {
         mesh::for_each_triangle(mesh, [&](mesh::TriangleId, const mesh::Triangle&) { ++count; });
     }
+    out.triangle_count = count;
     out.triangles.corners_per_triangle = 3;
-    out.triangles.corners.reserve(3 * std::size_t{count});
     out.triangles.attribute_count = attribute_count;
-    out.triangles.attributes.reserve(std::size_t{attribute_count} * count);
-    mesh::for_each_triangle(mesh, [&](mesh::TriangleId, const mesh::Triangle& t) {
-        for (int k = 0; k < 3; ++k) {
-            out.triangles.corners.push_back(number[index(t.v[k])]);
-            if (with_neighbours)
-                out.neighbours.neighbours.push_back(t.n[k].is_none() ? none
-                                                                     : triangle_number[index(t.n[k].triangle())]);
-        }
-        const std::size_t row = std::size_t{t.region} * attribute_count;
-        for (std::uint32_t i = 0; i < attribute_count; ++i)
-            out.triangles.attributes.push_back(row + i < region_attributes.size() ? region_attributes[row + i] : 0.0);
-    });
+    if (!materialise) {
+        // Each pass over the stream walks the slots again; `number` is
+        // shared by the passes (the -V statistics and the .ele file).
+        auto shared_number = std::make_shared<const std::vector<std::uint32_t>>(number);
+        out.stream = [&mesh, shared_number, count, attribute_count, region_attributes] {
+            return io::EleSource{count, 3, attribute_count,
+                                 [&mesh, shared_number, attribute_count, region_attributes,
+                                  slot = std::uint32_t{0}](std::uint32_t* corners, double* attributes) mutable {
+                                     while (!mesh.triangle(mesh::TriangleId{slot}).live()) ++slot;
+                                     const mesh::Triangle& t = mesh.triangle(mesh::TriangleId{slot++});
+                                     for (int k = 0; k < 3; ++k) corners[k] = (*shared_number)[index(t.v[k])];
+                                     const std::size_t row = std::size_t{t.region} * attribute_count;
+                                     for (std::uint32_t i = 0; i < attribute_count; ++i)
+                                         attributes[i] = row + i < region_attributes.size() ? region_attributes[row + i] : 0.0;
+                                 }};
+        };
+    } else {
+        out.triangles.corners.reserve(3 * std::size_t{count});
+        out.triangles.attributes.reserve(std::size_t{attribute_count} * count);
+        mesh::for_each_triangle(mesh, [&](mesh::TriangleId, const mesh::Triangle& t) {
+            for (int k = 0; k < 3; ++k) {
+                out.triangles.corners.push_back(number[index(t.v[k])]);
+                if (with_neighbours)
+                    out.neighbours.neighbours.push_back(t.n[k].is_none() ? none
+                                                                         : triangle_number[index(t.n[k].triangle())]);
+            }
+            const std::size_t row = std::size_t{t.region} * attribute_count;
+            for (std::uint32_t i = 0; i < attribute_count; ++i)
+                out.triangles.attributes.push_back(row + i < region_attributes.size() ? region_attributes[row + i] : 0.0);
+        });
+    }
 
     // Markers: keep non-zero input markers; otherwise a subsegment's marker,
     // then 1 for any boundary vertex.

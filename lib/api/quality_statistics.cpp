@@ -30,11 +30,14 @@ std::vector<std::string> quality_statistics(const MeshArrays& mesh) {
     double min_altitude = inf, max_ratio = 0, min_angle = 180, max_angle = 0;
 
     const auto& xy = mesh.nodes.xy;
-    const std::size_t per = mesh.triangles.corners_per_triangle;
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const io::EleSource triangles = triangle_source(mesh);
+    std::uint32_t corners[6];
+    std::vector<double> attributes(triangles.attribute_count);
+    for (std::size_t t = 0; t < triangles.count; ++t) {
+        triangles.next(corners, attributes.data());
         std::array<double, 3> px, py, edge2;  // edge2[k]: squared length of the edge opposite corner k
         for (std::size_t k = 0; k < 3; ++k) {
-            const std::size_t v = mesh.triangles.corners[t * per + k];
+            const std::size_t v = corners[k];
             px[k] = xy[2 * v];
             py[k] = xy[2 * v + 1];
         }
@@ -66,7 +69,7 @@ std::vector<std::string> quality_statistics(const MeshArrays& mesh) {
             ++angle_histogram[std::min<std::size_t>(17, static_cast<std::size_t>(degrees / 10))];
         }
     }
-    if (mesh.triangles.size() == 0) return {};
+    if (triangles.count == 0) return {};
 
     std::vector<std::string> lines;
     lines.push_back("Mesh quality statistics:");

@@ -41,9 +41,12 @@ void warn_duplicates(const std::vector<std::pair<std::uint32_t, std::uint32_t>>&
                              }))});
 }
 
-std::vector<geometry::Point> points_of(const NodeSet& nodes) {
+// The vertices as Points.  The NodeSet gives its coordinates up: the mesh
+// keeps them from here on, and mesh_to_arrays() takes them back for output.
+std::vector<geometry::Point> take_points(NodeSet& nodes) {
     std::vector<geometry::Point> points(nodes.size());
     for (std::size_t i = 0; i < points.size(); ++i) points[i] = {nodes.xy[2 * i], nodes.xy[2 * i + 1]};
+    nodes.xy = {};
     return points;
 }
 
@@ -63,7 +66,7 @@ void make_hull_segments(mesh::Mesh& mesh) {
 void triangulate_points(const Options& options, Input& in, Triangulated& out, const WarningSink& warn) {
     triangulate::DelaunayReport report;
     try {
-        out.mesh = triangulate::delaunay(points_of(in.nodes.data), report);
+        out.mesh = triangulate::delaunay(take_points(in.nodes.data), report);
     } catch (const GeometryError& e) {
         throw InputError(in.node_file, 0, e.what());
     }
@@ -76,7 +79,7 @@ void triangulate_pslg(const Options& options, Input& in, Triangulated& out, cons
     const PolyFile& poly = *in.poly;
     // The vertices were moved from the PolyFile into in.nodes.
     triangulate::Pslg& pslg = out.pslg.emplace(triangulate::pslg_from(poly));
-    pslg.points = points_of(in.nodes.data);
+    pslg.points = take_points(in.nodes.data);
     triangulate::CdtOptions cdt;
     cdt.convex_hull = options.convex_hull;
     cdt.ignore_holes = options.ignore_holes;
@@ -128,7 +131,7 @@ void triangulate_pslg(const Options& options, Input& in, Triangulated& out, cons
 
 void rebuild_mesh(const Options& options, Input& in, Triangulated& out) {
     const EleSet& ele = *in.triangles;
-    const std::vector<geometry::Point> points = points_of(in.nodes.data);
+    const std::vector<geometry::Point> points = take_points(in.nodes.data);
     triangulate::TriangleMeshInput input;
     input.points = points;
     input.corners = ele.corners;

@@ -56,7 +56,7 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
 
     io::OutputTransaction out;
     if (!o.no_node_output) io::write_node(out, names.out_node, arrays.nodes, format);
-    if (!o.no_ele_output) io::write_ele(out, names.out_ele, arrays.triangles, format);
+    if (!o.no_ele_output) io::write_ele(out, names.out_ele, triangle_source(arrays), format);
     if (want_poly) {
         PolyFile poly;
         poly.nodes_from_node_file = true;  // Triangle's output .poly refers to the .node

@@ -9,7 +9,9 @@
 // has them: a NodeSet or SegmentSet without markers is written without, so a
 // file reads back as it was written.
 
+#include <algorithm>
 #include <iterator>
+#include <vector>
 
 #include <fmt/compile.h>
 #include <fmt/format.h>
@@ -119,16 +121,32 @@ void write_ele(OutputTransaction& tx, const std::string& path, const EleSet& ele
     const std::uint32_t nc = ele.corners_per_triangle;
     check_sizes(nc == 3 || nc == 6, path, "nodes per triangle");
     check_sizes(ele.corners.size() % nc == 0, path, "corner count");
-    const std::size_t n = ele.size();
     const std::uint32_t na = ele.attribute_count;
-    check_sizes(ele.attributes.size() == n * na, path, "attribute count");
+    check_sizes(ele.attributes.size() == ele.size() * na, path, "attribute count");
+    std::size_t t = 0;
+    const EleSource source{ele.size(), nc, na, [&](std::uint32_t* corners, double* attributes) {
+                               std::copy_n(&ele.corners[t * nc], nc, corners);
+                               std::copy_n(ele.attributes.data() + t * na, na, attributes);
+                               ++t;
+                           }};
+    write_ele(tx, path, source, format);
+}
+
+void write_ele(OutputTransaction& tx, const std::string& path, const EleSource& source,
+               const WriteFormat& format) {
+    const std::uint32_t nc = source.corners_per_triangle;
+    check_sizes(nc == 3 || nc == 6, path, "nodes per triangle");
+    const std::size_t n = source.count;
+    const std::uint32_t na = source.attribute_count;
     auto& file = tx.begin_file(path);
     auto& buf = file.buffer();
     Out out(buf);
     fmt::format_to(out, FMT_COMPILE("{}  {}  {}\n"), n, nc, na);
     const int base = format.base;
+    std::uint32_t c[6];
+    std::vector<double> attributes(na);
     for (std::size_t t = 0; t < n; ++t) {
-        const std::uint32_t* c = &ele.corners[t * nc];
+        source.next(c, attributes.data());
         fmt::format_to(out, FMT_COMPILE("{:4}    {:4}  {:4}  {:4}"), numbered(t, base),
                        numbered_index(c[0], base), numbered_index(c[1], base),
                        numbered_index(c[2], base));
@@ -136,7 +154,7 @@ void write_ele(OutputTransaction& tx, const std::string& path, const EleSet& ele
             fmt::format_to(out, FMT_COMPILE("  {:4}  {:4}  {:4}"), numbered_index(c[3], base),
                            numbered_index(c[4], base), numbered_index(c[5], base));
         for (std::uint32_t a = 0; a < na; ++a)
-            fmt::format_to(out, FMT_COMPILE("  {}"), ele.attributes[t * na + a]);
+            fmt::format_to(out, FMT_COMPILE("  {}"), attributes[a]);
         buf.push_back('\n');
         file.flush_if_full();
     }

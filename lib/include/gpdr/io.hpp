@@ -15,6 +15,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -134,6 +135,20 @@ void write_poly(OutputTransaction& out, const std::string& path, const PolyFile&
                 const WriteFormat& format);
 
 void write_ele(OutputTransaction& out, const std::string& path, const EleSet& triangles,
+               const WriteFormat& format);
+
+// Triangles produced one at a time, for writing a mesh without first
+// copying it into an EleSet (the copy would cost 12 bytes per triangle at
+// the moment memory use peaks).  next() is called exactly `count` times, in
+// order, and fills corners_per_triangle 0-based corners and attribute_count
+// attributes of the next triangle.
+struct EleSource {
+    std::size_t count = 0;
+    std::uint32_t corners_per_triangle = 3;
+    std::uint32_t attribute_count = 0;
+    std::function<void(std::uint32_t* corners, double* attributes)> next;
+};
+void write_ele(OutputTransaction& out, const std::string& path, const EleSource& triangles,
                const WriteFormat& format);
 
 void write_area(OutputTransaction& out, const std::string& path, const AreaSet& areas,

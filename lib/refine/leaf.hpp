@@ -29,7 +29,8 @@
 // rank_count stacks by shape rank (QualityTest::shape_rank, 0 = worst).
 // Within a stack the newest goes first: it was just created, so it is still
 // in the cache (first-in-first-out was 1.6 times slower, for 1% fewer
-// triangles at 20 degrees).  Levels are allocated on first use, so a leaf that never sees a level costs a null pointer for it.
+// triangles at 20 degrees).  Levels are allocated on first use, so a leaf
+// that never sees a level costs a null pointer for it.
 
 #include <cmath>
 #include <array>

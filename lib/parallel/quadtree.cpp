@@ -1,0 +1,172 @@
+// The quadtree's geometry, cell lookup and buffer zones (see quadtree.hpp
+// for the conventions and the concurrency rules).
+
+#include "parallel/quadtree.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <gpdr/errors.hpp>
+
+namespace gpdr::parallel {
+
+double distance(const Square& a, const Square& b) {
+    const double gx = std::max({0.0, a.x0 - (b.x0 + b.side), b.x0 - (a.x0 + a.side)});
+    const double gy = std::max({0.0, a.y0 - (b.y0 + b.side), b.y0 - (a.y0 + a.side)});
+    return std::hypot(gx, gy);
+}
+
+bool disk_meets(const Square& s, const Point& c, double r) {
+    const double dx = std::max({0.0, s.x0 - c.x, c.x - (s.x0 + s.side)});
+    const double dy = std::max({0.0, s.y0 - c.y, c.y - (s.y0 + s.side)});
+    // A hair of slack: counting a cell the disk only grazes is safe (it can
+    // only delay a split), missing one is not.
+    const double rr = r * (1.0 + 0x1p-30);
+    return dx * dx + dy * dy <= rr * rr;
+}
+
+Quadtree::Quadtree(double x0, double y0, double side) : x0_(x0), y0_(y0), side_(side) {
+    NodeAllocator a;
+    const NodeId root = allocate(a);
+    Node& n = node(root);
+    n.kind.store(static_cast<std::uint8_t>(NodeKind::leaf), std::memory_order_release);
+    // The rest of the block is left unused (ids are cheap).
+}
+
+double Quadtree::side_at(int level) const { return std::ldexp(side_, -level); }
+
+Square Quadtree::square(NodeId id) const {
+    const Node& n = node(id);
+    const double s = side_at(n.level);
+    return {x0_ + s * n.ix, y0_ + s * n.iy, s};
+}
+
+Square Quadtree::cell_square(int level, std::uint32_t ix, std::uint32_t iy) const {
+    const double s = side_at(level);
+    return {x0_ + s * ix, y0_ + s * iy, s};
+}
+
+std::uint32_t Quadtree::cell_x(double x, int level) const {
+    const double f = std::floor((x - x0_) / side_at(level));
+    const double top = std::ldexp(1.0, level) - 1;
+    return static_cast<std::uint32_t>(std::clamp(f, 0.0, top));
+}
+std::uint32_t Quadtree::cell_y(double y, int level) const {
+    const double f = std::floor((y - y0_) / side_at(level));
+    const double top = std::ldexp(1.0, level) - 1;
+    return static_cast<std::uint32_t>(std::clamp(f, 0.0, top));
+}
+
+int Quadtree::level_of_radius(double r) const {
+    if (!(r > 0) || !std::isfinite(r)) return max_level + 1;
+    const double x = side_ / (4.0 * r);
+    if (!(x > 1.0)) return -1;
+    int k = std::ilogb(x);
+    if (k > max_level + 1) return max_level + 1;
+    if (!(side_at(k) > 4.0 * r)) --k;  // ℓ_k must exceed 4r strictly
+    if (k < 0) return -1;
+    return std::min(k, max_level + 1);
+}
+
+NodeId Quadtree::allocate(NodeAllocator& alloc) {
+    if (alloc.next == alloc.end) {
+        constexpr std::uint32_t block = 64;
+        const std::uint32_t first = next_.fetch_add(block, std::memory_order_acq_rel);
+        if (std::uint64_t{first} + block > (std::uint64_t{1} << 32) - 2) throw Error("parallel: quadtree too large");
+        const std::uint32_t last = first + block - 1;
+        for (std::uint32_t c = first >> 12; c <= last >> 12; ++c)
+            if (!nodes_.ensure(c)) throw Error("parallel: quadtree too large");
+        alloc.next = first;
+        alloc.end = first + block;
+    }
+    return alloc.next++;
+}
+
+NodeId Quadtree::child(NodeId id, int q, NodeAllocator& alloc) {
+    Node& n = node(id);
+    if (n.child_plus1[q] != 0) return n.child(q);
+    const NodeId c = allocate(alloc);
+    Node& m = node(c);
+    m.level = static_cast<std::uint8_t>(n.level + 1);
+    m.ix = n.ix * 2 + (q & 1);
+    m.iy = n.iy * 2 + (q >> 1);
+    m.parent_plus1 = id + 1;
+    n.child_plus1[q] = c + 1;
+    return c;
+}
+
+NodeId Quadtree::cell(NodeId from, int level, std::uint32_t ix, std::uint32_t iy, NodeAllocator* alloc, NodeId& leaf) {
+    NodeId id = from;
+    leaf = no_node;
+    for (;;) {
+        Node& n = node(id);
+        const NodeKind k = n.get_kind();
+        if (k == NodeKind::leaf) leaf = id;
+        if (n.level == level) return id;
+        const int shift = level - n.level - 1;
+        const int q = static_cast<int>(((ix >> shift) & 1u) | (((iy >> shift) & 1u) << 1));
+        if (n.child_plus1[q] == 0) {
+            if (alloc == nullptr) return no_node;
+            id = child(id, q, *alloc);
+        } else {
+            id = n.child(q);
+        }
+    }
+}
+
+NodeId Quadtree::leaf_at(const Point& p) const {
+    NodeId id = root();
+    for (;;) {
+        const Node& n = node(id);
+        if (n.get_kind() != NodeKind::internal) return id;
+        const double half = side_at(n.level + 1);
+        const Square s = square(id);
+        const int q = (p.x >= s.x0 + half ? 1 : 0) | (p.y >= s.y0 + half ? 2 : 0);
+        id = n.child(q);
+    }
+}
+
+double Quadtree::effective_side(NodeId leaf) const {
+    double side = side_at(node(leaf).level);
+    for (NodeId a = node(leaf).parent(); a != no_node; a = node(a).parent())
+        if (node(a).count.load(std::memory_order_relaxed) != 0) side = side_at(node(a).level);
+    return side;
+}
+
+void Quadtree::zone_search(NodeId id, const Square& target, double target_side, double above,
+                           std::vector<NodeId>& out) const {
+    const Node& n = node(id);
+    const Square s = square(id);
+    const NodeKind k = n.get_kind();
+    // Every leaf below has ℓe <= max(ℓ(n), above): prune when even that is too far.
+    const double bound = std::max(s.side, above);
+    if (distance(target, s) >= 0.5 * (target_side + bound)) return;
+    if (k != NodeKind::internal) {
+        out.push_back(id);
+        return;
+    }
+    const double below = n.count.load(std::memory_order_relaxed) != 0 ? std::max(above, s.side) : above;
+    for (int q = 0; q < 4; ++q) zone_search(n.child(q), target, target_side, below, out);
+}
+
+void Quadtree::zone(NodeId leaf, std::vector<NodeId>& out) const {
+    out.clear();
+    zone_search(root(), square(leaf), effective_side(leaf), 0.0, out);
+}
+
+void Quadtree::leaves(std::vector<NodeId>& out) const {
+    out.clear();
+    std::vector<NodeId> stack{root()};
+    while (!stack.empty()) {
+        const NodeId id = stack.back();
+        stack.pop_back();
+        const Node& n = node(id);
+        if (n.get_kind() != NodeKind::internal) {
+            out.push_back(id);
+            continue;
+        }
+        for (int q = 3; q >= 0; --q) stack.push_back(n.child(q));
+    }
+}
+
+}  // namespace gpdr::parallel

@@ -1,0 +1,132 @@
+#pragma once
+// The quadtree that overlays the mesh during parallel refinement (GPDR paper
+// §3; DESIGN.md "Notes for the parallel layer").
+//
+// Conventions (written down once, used everywhere in parallel/):
+//   - A node is a square cell: level k has side ℓ_k = ℓ_root 2^-k and cell
+//     coordinates (ix, iy) in [0, 2^k); child q of a cell has quadrant bits
+//     q = (x half) | (y half) << 1.  Squares are half-open [x0, x0+ℓ).
+//   - The LEVEL of a triangle with circumradius r is the k with
+//     4r < ℓ_k <= 8r.  A triangle is COUNTED in each level-k cell its closed
+//     circumdisk meets (at most 2 x 2 cells, since its diameter is below
+//     ℓ_k / 2).  Node::count is that number; it is the paper's Counter_i
+//     with i = σ = ⌊log2(ℓ/r)⌋ in {2} (we use the shifted convention
+//     4 <= ℓ/r < 8 inclusive of the right boundary: r >= ℓ/8 and r < ℓ/4).
+//   - Relation (9) for a leaf L is "every triangle whose circumdisk meets L
+//     has r < ℓ(L)/4"; it holds exactly when no triangle is counted in a
+//     strict ancestor of L.  A leaf may split when its own count is 0: then
+//     every triangle meeting a child has r < ℓ(L)/8 = ℓ(child)/4.
+//   - Cells below leaves are materialised as SHADOW nodes when a triangle is
+//     counted there, so a child's count is exact the moment it becomes a
+//     leaf (no rescan of the mesh on a split).
+//   - A triangle counted in an INTERNAL node breaks (9) for the leaves under
+//     it (a Bowyer-Watson triangle can be larger than the cavity it came
+//     from when the new vertex is nearly on a cavity edge).  Such counts are
+//     atomic; the scheduler then uses the EFFECTIVE side ℓe(L) = the side of
+//     the largest ancestor-or-self with a count, for which "every triangle
+//     meeting L has r < ℓe(L)/4" holds again, and buffer zones grow to match.
+//
+// Concurrency: a node's count, children and state are written only by the
+// worker whose buffer zone holds the leaf at or above it (plain relaxed
+// loads and stores); internal nodes never change except their counts
+// (atomic read-modify-write).  `kind` changes only on the master thread
+// (release), and workers descend through internal nodes with acquire loads.
+
+#include <atomic>
+#include <cstdint>
+#include <vector>
+
+#include "geometry/point.hpp"
+#include "mesh/store.hpp"
+
+namespace gpdr::parallel {
+
+using geometry::Point;
+using NodeId = std::uint32_t;
+inline constexpr NodeId no_node = 0xFFFFFFFFu;
+// Deepest level (cell coordinates fit 26 bits in the per-triangle records).
+inline constexpr int max_level = 26;
+
+enum class NodeKind : std::uint8_t { shadow = 0, leaf = 1, internal = 2 };
+
+struct LeafState;
+
+struct Node {
+    // All-zero is an unused shadow node without children (the store is
+    // zero-filled); ids are stored plus one so that 0 means "none".
+    std::atomic<std::uint8_t> kind;
+    std::uint8_t level;
+    std::uint32_t ix, iy;
+    std::uint32_t parent_plus1;
+    std::uint32_t child_plus1[4];
+    std::atomic<std::int32_t> count;
+    std::atomic<std::int32_t> owner;  // worker + 1 whose buffer zone holds this leaf; 0: none
+    LeafState* state;                 // leaves: the refinement work
+
+    NodeKind get_kind() const { return static_cast<NodeKind>(kind.load(std::memory_order_acquire)); }
+    NodeId child(int q) const { return child_plus1[q] - 1; }
+    NodeId parent() const { return parent_plus1 - 1; }
+};
+
+struct Square {
+    double x0, y0, side;
+    bool contains(const Point& p) const { return p.x >= x0 && p.x < x0 + side && p.y >= y0 && p.y < y0 + side; }
+};
+
+// Euclidean distance between two squares (0 when they touch or overlap).
+double distance(const Square& a, const Square& b);
+// Whether the closed disk (centre c, radius r) meets the square.
+bool disk_meets(const Square& s, const Point& c, double r);
+
+// Node ids for one thread: blocks claimed from the tree with one atomic add.
+struct NodeAllocator {
+    NodeId next = 0, end = 0;
+};
+
+class Quadtree {
+public:
+    // The root square (x0, y0, side); the root starts as the only leaf.
+    Quadtree(double x0, double y0, double side);
+
+    double side_at(int level) const;
+    Square square(NodeId id) const;
+    Square cell_square(int level, std::uint32_t ix, std::uint32_t iy) const;
+    Node& node(NodeId id) const { return nodes_[id]; }
+    static constexpr NodeId root() { return 0; }
+    std::uint32_t node_end() const { return next_.load(std::memory_order_acquire); }
+
+    // Cell coordinate of x at `level`, clamped into the root.
+    std::uint32_t cell_x(double x, int level) const;
+    std::uint32_t cell_y(double y, int level) const;
+    // The level a triangle of circumradius r is counted at (see above), -1
+    // when r >= ℓ_root / 4, or max_level + 1 when it is too small to matter.
+    int level_of_radius(double r) const;
+
+    // The node of cell (level, ix, iy), descending from `from` (an
+    // ancestor-or-self of it).  Missing shadow nodes below leaves are made
+    // with `alloc`; with alloc == nullptr, no_node is returned instead.
+    // `leaf` receives the leaf on the way down (no_node when the cell is
+    // an internal node).
+    NodeId cell(NodeId from, int level, std::uint32_t ix, std::uint32_t iy, NodeAllocator* alloc, NodeId& leaf);
+    // The child q of node id, made if missing.
+    NodeId child(NodeId id, int q, NodeAllocator& alloc);
+    // The leaf whose square holds p (p clamped into the root).
+    NodeId leaf_at(const Point& p) const;
+
+    // ℓe(leaf) (see above).
+    double effective_side(NodeId leaf) const;
+    // BUF(leaf) ∪ {leaf}: the leaves L' with dist(leaf, L') < (ℓe(leaf) + ℓe(L'))/2.
+    void zone(NodeId leaf, std::vector<NodeId>& out) const;
+    // Every leaf, in depth-first order.
+    void leaves(std::vector<NodeId>& out) const;
+
+private:
+    NodeId allocate(NodeAllocator& alloc);
+    void zone_search(NodeId n, const Square& target, double target_side, double above, std::vector<NodeId>& out) const;
+
+    double x0_, y0_, side_;
+    mutable mesh::ChunkTable<Node, 12, (1u << 20)> nodes_;
+    std::atomic<std::uint32_t> next_{0};
+};
+
+}  // namespace gpdr::parallel

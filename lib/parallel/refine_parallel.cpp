@@ -1,0 +1,252 @@
+// Parallel refinement: set-up (root square, counters, first leaf), the
+// master loop with worker threads, the same loop on the calling thread for
+// one thread, and the merged report.  See refine_parallel.hpp.
+
+#include "parallel/refine_parallel.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <exception>
+#include <limits>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <cstdio>
+#include <cstdlib>
+
+#include "geometry/constructions.hpp"
+#include "mesh/traverse.hpp"
+#include "parallel/scheduler.hpp"
+#include "parallel/worker.hpp"
+
+namespace gpdr::parallel {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
+
+// The root square: it holds every circumdisk of the mesh (so every Steiner
+// point, and by the Bowyer-Watson containment every later circumdisk, lies
+// in it) and has side > 4 r_max, so relation (9) holds for it from the start.
+Square root_square(const mesh::Mesh& mesh) {
+    double min_x = std::numeric_limits<double>::infinity(), min_y = min_x, max_x = -min_x, max_y = -min_x, r_max = 0;
+    mesh::for_each_triangle(mesh, [&](mesh::TriangleId, const mesh::Triangle& t) {
+        const geometry::Circle c = geometry::circumcircle(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]));
+        const double r = std::sqrt(c.radius_squared);
+        if (!std::isfinite(r)) return;
+        min_x = std::min(min_x, c.centre.x - r);
+        max_x = std::max(max_x, c.centre.x + r);
+        min_y = std::min(min_y, c.centre.y - r);
+        max_y = std::max(max_y, c.centre.y + r);
+        r_max = std::max(r_max, r);
+    });
+    if (!(max_x >= min_x)) return {0, 0, 1};
+    double side = std::max({max_x - min_x, max_y - min_y, 4.0 * r_max});
+    side = side * (1.0 + 0x1p-20) + std::numeric_limits<double>::min();
+    return {0.5 * (min_x + max_x) - 0.5 * side, 0.5 * (min_y + max_y) - 0.5 * side, side};
+}
+
+void merge(refine::RefineReport& into, refine::RefineReport& from) {
+    into.steiner_points += from.steiner_points;
+    into.segment_splits += from.segment_splits;
+    into.triangles_created += from.triangles_created;
+    if (into.stopped == refine::RefineReport::Stop::none) into.stopped = from.stopped;
+    into.new_vertices.insert(into.new_vertices.end(), from.new_vertices.begin(), from.new_vertices.end());
+    from.new_vertices = {};
+}
+
+}  // namespace
+
+void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in, const ParallelOptions& options,
+                     ParallelReport& report) {
+    unsigned threads = options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+    const unsigned granularity = options.granularity != 0 ? options.granularity : default_granularity;
+    report.threads = threads;
+    report.granularity = granularity;
+    refine::RefineSettings settings = settings_in;
+    settings.granularity = granularity;
+
+    if (threads == 1 && options.one_leaf_for_one_thread) {
+        const auto t0 = Clock::now();
+        refine::refine_mesh(mesh, settings, report.refine);
+        report.workers.assign(1, ThreadTimes{seconds(t0, Clock::now()), 0, 0});
+        report.leaves = 1;
+        return;
+    }
+
+    const auto start = Clock::now();
+    refine::RefineRun run(mesh, settings);
+    const Square root = root_square(mesh);
+    Quadtree tree(root.x0, root.y0, root.side);
+    CellRecords records;
+    std::vector<std::unique_ptr<Worker>> workers;
+    for (unsigned w = 0; w < threads; ++w)
+        workers.push_back(std::make_unique<Worker>(static_cast<int>(w), mesh, run, tree, records, options));
+
+    // The first leaf: the root, every triangle counted and classified.
+    Node& root_node = tree.node(Quadtree::root());
+    root_node.state = workers[0]->new_leaf_state(root);
+    workers[0]->count_all();
+    workers[0]->refiner().classify_all(root_node.state->work);
+    {
+        // Everything lies in the root; anything handed off (a centre on the
+        // root's far edge) stays with it.
+        refine::Leaf& w = root_node.state->work;
+        for (const auto& q : w.handed_off_triangles) {
+            const mesh::Triangle& t = mesh.triangle(q.id);
+            const refine::TriangleMeasures m =
+                refine::QualityTest::measure(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]));
+            w.push_poor(q, w.sigma(m.circle.radius_squared),
+                        run.quality().shape_rank(m.shortest.length_squared, m.circle.radius_squared,
+                                                 refine::Leaf::rank_count));
+        }
+        w.handed_off_triangles.clear();
+    }
+
+    Scheduler scheduler(tree, report, options.checked);
+    if (workers[0]->outgrew_root) scheduler.set_serial();
+    scheduler.offer(Quadtree::root());
+    report.master.managing += seconds(start, Clock::now());
+
+    std::exception_ptr failure;
+    bool stop = false;
+    auto check = [&] {
+        verify_quadtree(mesh, tree, records, report.problems);
+        ++report.checks;
+        for (const auto& w : workers)
+            if (w->zone_escapes != 0)
+                report.problems.push_back("a worker counted a triangle in a leaf outside its buffer zone");
+    };
+
+    if (threads == 1) {
+        // The same schedule on the calling thread: no master, no worker threads.
+        Worker& worker = *workers[0];
+        for (;;) {
+            const auto t0 = Clock::now();
+            const NodeId leaf = scheduler.assign(0, 0);
+            if (leaf == no_node) break;
+            const auto t1 = Clock::now();
+            report.master.managing += seconds(t0, t1);
+            const bool split = worker.run(leaf);
+            if (std::getenv("GPDR_TRACE") && report.assignments % 1000 < 3) {
+                const auto& w = tree.node(leaf).state->work;
+                std::fprintf(stderr, "TRACE %llu leaf %u level %d poor %zu sub %zu steiner %llu split %d\n",
+                             (unsigned long long)report.assignments, leaf, int(tree.node(leaf).level), w.poor_entries(),
+                             w.subsegment_entries(), (unsigned long long)worker.report.steiner_points, int(split));
+            }
+            const auto t2 = Clock::now();
+            scheduler.complete(worker, split);
+            if (options.checked) check();
+            report.master.managing += seconds(t2, Clock::now());
+            if (worker.stopped) break;
+        }
+    } else {
+        std::mutex mutex;
+        std::condition_variable master_cv;
+        struct Slot {
+            std::condition_variable cv;
+            NodeId task = no_node;
+            bool finished = false;
+            bool split = false;
+        };
+        std::vector<Slot> slots(threads);
+        bool quit = false;
+        std::vector<std::thread> pool;
+        for (unsigned w = 0; w < threads; ++w) {
+            pool.emplace_back([&, w] {
+                Worker& worker = *workers[w];
+                Slot& slot = slots[w];
+                std::unique_lock lock(mutex);
+                for (;;) {
+                    const auto t0 = Clock::now();
+                    slot.cv.wait(lock, [&] { return quit || slot.task != no_node; });
+                    worker.times.waiting += seconds(t0, Clock::now());
+                    if (quit) return;
+                    const NodeId leaf = slot.task;
+                    lock.unlock();
+                    bool split = false;
+                    try {
+                        split = worker.run(leaf);
+                    } catch (...) {
+                        lock.lock();
+                        if (!failure) failure = std::current_exception();
+                        lock.unlock();
+                        worker.stopped = true;
+                    }
+                    lock.lock();
+                    slot.task = no_node;
+                    slot.split = split;
+                    slot.finished = true;
+                    master_cv.notify_one();
+                }
+            });
+        }
+        {
+            std::unique_lock lock(mutex);
+            unsigned busy = 0;
+            bool need_check = false;
+            for (;;) {
+                const auto t0 = Clock::now();
+                for (unsigned w = 0; w < threads; ++w) {
+                    if (!slots[w].finished) continue;
+                    slots[w].finished = false;
+                    --busy;
+                    scheduler.complete(*workers[w], slots[w].split);
+                    if (workers[w]->stopped) stop = true;
+                    need_check = options.checked;
+                }
+                if (need_check && busy == 0) {
+                    check();
+                    need_check = false;
+                }
+                if (!stop && !failure && !need_check) {
+                    for (unsigned w = 0; w < threads; ++w) {
+                        if (slots[w].task != no_node) continue;
+                        const NodeId leaf = scheduler.assign(static_cast<int>(w), busy);
+                        if (leaf == no_node) break;
+                        slots[w].task = leaf;
+                        ++busy;
+                        slots[w].cv.notify_one();
+                    }
+                }
+                const auto t1 = Clock::now();
+                report.master.managing += seconds(t0, t1);
+                if (busy == 0) break;
+                master_cv.wait(lock, [&] {
+                    return std::any_of(slots.begin(), slots.end(), [](const Slot& s) { return s.finished; });
+                });
+                report.master.waiting += seconds(t1, Clock::now());
+            }
+            quit = true;
+            for (auto& s : slots) s.cv.notify_one();
+        }
+        for (auto& t : pool) t.join();
+    }
+    if (failure) std::rethrow_exception(failure);
+
+    // The merged report, and the final count of what is left (refine_mesh's).
+    const auto t_end = Clock::now();
+    std::vector<refine::LeafRefiner::GivenUp> given_up;
+    for (auto& w : workers) {
+        merge(report.refine, w->report);
+        const auto& g = w->refiner().given_up();
+        given_up.insert(given_up.end(), g.begin(), g.end());
+        report.workers.push_back(w->times);
+        report.handed_off_local += w->handed_off_local;
+        report.relation9_exceptions += w->relation9_exceptions;
+        if (w->zone_escapes != 0 && options.checked)
+            report.problems.push_back("a worker counted a triangle in a leaf outside its buffer zone");
+    }
+    report.serialised = scheduler.serial();
+    std::vector<NodeId> leaves;
+    tree.leaves(leaves);
+    report.leaves = leaves.size();
+    workers.clear();  // the pools give their spare slots back
+    refine::count_left(mesh, run, std::move(given_up), report.refine);
+    report.master.managing += seconds(t_end, Clock::now());
+}
+
+}  // namespace gpdr::parallel

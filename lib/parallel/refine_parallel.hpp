@@ -1,0 +1,94 @@
+#pragma once
+// Parallel Delaunay refinement (GPDR paper §3): the mesh is overlaid by a
+// quadtree (quadtree.hpp); one master thread keeps the queue of leaves with
+// work and hands a leaf to a free worker only when its buffer zone shares no
+// leaf with the buffer zone of any leaf being refined; each worker runs the
+// paper's Fig. 4 on its leaf (refine::LeafRefiner::refine_leaf: σ levels
+// i_min .. i_min + g), updates the buckets and counters of its zone, and
+// splits the leaf while relation (9) allows.
+//
+// Guarantees: those of refine::refine_mesh (same quality criteria, limits,
+// placement strategies, small-angle protection; a valid constrained
+// Delaunay mesh), with the mesh, vertex numbering and triangle order
+// depending on the thread schedule.  A user triunsuitable() or placement
+// strategy is called from several threads at once and must be thread-safe.
+//
+// threads == 1 runs the quadtree schedule on the calling thread with no
+// master thread and no worker threads (the same refinement as -jN, one leaf
+// at a time), unless ParallelOptions::one_leaf_for_one_thread asks for the
+// sequential refiner's single leaf that never splits (refine::refine_mesh).
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "mesh/mesh.hpp"
+#include "refine/refine.hpp"
+
+namespace gpdr::parallel {
+
+// Where one thread's time went (the paper's Fig. 5, right).
+struct ThreadTimes {
+    double refining = 0;  // refining leaves (Fig. 4 lines 1-12; includes the counters' upkeep)
+    double managing = 0;  // scheduling, routing work between leaves, splitting leaves
+    double waiting = 0;   // idle: waiting for work or for a worker
+};
+
+struct ParallelReport {
+    refine::RefineReport refine;  // merged over all workers, as refine_mesh reports it
+    unsigned threads = 0;         // worker threads used (1: on the calling thread)
+    unsigned granularity = 0;     // the g used
+    ThreadTimes master;
+    std::vector<ThreadTimes> workers;
+
+    std::uint64_t assignments = 0;     // leaves handed to workers
+    std::uint64_t splits = 0;          // leaf splits
+    std::uint64_t leaves = 0;          // leaves at the end
+    int depth = 0;                     // deepest leaf level
+    unsigned most_concurrent = 0;      // most leaves refined at once
+    std::uint64_t handed_off_local = 0;   // work routed by a worker into its own buffer zone
+    std::uint64_t handed_off_master = 0;  // work routed through the master
+    // Triangles created larger than relation (9) allows for some leaf (the
+    // scheduler widened the buffer zones for them; see quadtree.hpp).
+    std::uint64_t relation9_exceptions = 0;
+    bool serialised = false;  // a triangle outgrew the root: the rest ran one leaf at a time
+    // Checked mode: the invariant checks that failed (empty when all held).
+    std::vector<std::string> problems;
+    std::uint64_t checks = 0;  // quadtree verifications run (checked mode)
+};
+
+struct ParallelOptions {
+    unsigned threads = 0;      // 0: std::thread::hardware_concurrency()
+    unsigned granularity = 0;  // 0: default_granularity
+    // Verify the quadtree (relation (9) for every leaf, exact counters,
+    // leaves tiling the root) after every leaf refinement (the master waits
+    // until no worker is busy first), and buffer-zone exclusivity at every
+    // assignment.  Failures go to ParallelReport::problems.  Slow: tests.
+    bool checked = false;
+    // A leaf splits (when (9) allows) only if its last refinement created
+    // at least this many triangles: small, quiet leaves cost the master
+    // more than they give back.
+    std::uint64_t split_work = 1024;
+    bool one_leaf_for_one_thread = false;
+};
+
+// Granularity when none is given (measured: tests/parallel/bench_test.cpp).
+inline constexpr unsigned default_granularity = 2;
+
+// Refines `mesh` (the input refine::refine_mesh takes) in parallel.  Throws
+// what refine_mesh throws; a worker's exception is rethrown on the calling
+// thread after all threads have stopped.
+void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings, const ParallelOptions& options,
+                     ParallelReport& report);
+
+// The job pipeline's entry: threads 0 = hardware threads, granularity 0 =
+// default_granularity.
+inline void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings, unsigned threads,
+                            unsigned granularity, ParallelReport& report) {
+    ParallelOptions o;
+    o.threads = threads;
+    o.granularity = granularity;
+    refine_parallel(mesh, settings, o, report);
+}
+
+}  // namespace gpdr::parallel

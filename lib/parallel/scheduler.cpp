@@ -1,0 +1,242 @@
+// The master's scheduling (see scheduler.hpp for the rule and its proof)
+// and the checked mode's quadtree verification.
+
+#include "parallel/scheduler.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include <fmt/format.h>
+
+#include "geometry/constructions.hpp"
+#include "mesh/traverse.hpp"
+
+namespace gpdr::parallel {
+
+Scheduler::Info& Scheduler::info(NodeId id) {
+    if (id >= info_.size()) info_.resize(std::max<std::size_t>(id + 1, info_.size() * 2));
+    return info_[id];
+}
+
+bool Scheduler::has_work(NodeId leaf) const {
+    const Node& n = tree_.node(leaf);
+    return n.state != nullptr && !n.state->work.idle();
+}
+
+// Subsegments to split first, anywhere (as refine_leaf's step 0 comes
+// first: a poor triangle whose Steiner point waits for a subsegment that
+// another leaf must split would otherwise be taken again and again), then
+// larger triangles first across the whole tree (Miller's order, as far as
+// leaves allow): the absolute size class of the leaf's lowest σ level.
+long Scheduler::key(NodeId leaf) const {
+    const Node& n = tree_.node(leaf);
+    if (n.state->work.subsegment_entries() != 0) return long(n.level) - 4096;
+    const int lowest = n.state->work.lowest_level();
+    return long(n.level) + std::max(lowest, 0);
+}
+
+void Scheduler::offer(NodeId leaf) {
+    // Every change to a leaf's work is followed by an offer, so the queue
+    // may hold older entries of the same leaf: assign() skips an entry
+    // whose key is no longer the leaf's.
+    Info& i = info(leaf);
+    if (i.held || tree_.node(leaf).get_kind() != NodeKind::leaf || !has_work(leaf)) return;
+    queue_.push({key(leaf), leaf});
+}
+
+void Scheduler::push_into(NodeId leaf, const Routed& r) {
+    refine::Leaf& w = tree_.node(leaf).state->work;
+    if (r.is_triangle)
+        w.push_poor(r.triangle, w.sigma(r.radius_squared), r.rank);
+    else
+        w.push_subsegment(r.subsegment);
+}
+
+void Scheduler::deliver(const Routed& r) {
+    const NodeId x = tree_.leaf_at(r.at);
+    Info& i = info(x);
+    ++report_.handed_off_master;
+    if (i.held) {
+        i.inbox.push_back(r);  // its zone is being refined: later
+        return;
+    }
+    push_into(x, r);
+    offer(x);
+}
+
+void Scheduler::flush_inbox(NodeId leaf) {
+    std::vector<Routed> items;
+    items.swap(info(leaf).inbox);
+    for (const Routed& r : items) {
+        const NodeId x = tree_.leaf_at(r.at);  // the leaf may have split meanwhile
+        if (info(x).held && x != leaf) {
+            info(x).inbox.push_back(r);
+            continue;
+        }
+        push_into(x, r);
+    }
+}
+
+NodeId Scheduler::assign(int w, unsigned busy) {
+    if (active_.size() <= static_cast<std::size_t>(w)) active_.resize(w + 1);
+    if (serial_ && busy > 0) return no_node;
+    std::vector<std::pair<long, NodeId>> blocked;
+    NodeId chosen = no_node;
+    while (!queue_.empty()) {
+        const auto [k, x] = queue_.top();
+        queue_.pop();
+        Info& i = info(x);
+        if (tree_.node(x).get_kind() != NodeKind::leaf) continue;  // split since: its children were offered
+        if (i.held) {
+            blocked.push_back({k, x});  // (its work cannot be read now)
+            continue;
+        }
+        if (!has_work(x) || key(x) != k) continue;  // an older entry: the leaf was offered again
+        tree_.zone(x, zone_scratch_);
+        const bool free = std::none_of(zone_scratch_.begin(), zone_scratch_.end(),
+                                       [&](NodeId z) { return info(z).held; });
+        if (!free) {
+            blocked.push_back({k, x});
+            continue;
+        }
+        chosen = x;
+        break;
+    }
+    for (const auto& b : blocked) queue_.push(b);
+    if (chosen == no_node) return no_node;
+
+    if (checked_) {
+        // Exclusivity, checked independently of the held flags: the new zone
+        // against every zone being refined.
+        for (const Active& a : active_) {
+            if (a.leaf == no_node) continue;
+            for (NodeId z : zone_scratch_)
+                if (std::find(a.zone.begin(), a.zone.end(), z) != a.zone.end())
+                    report_.problems.push_back(fmt::format(
+                        "buffer zones overlap: leaf {} handed out while leaf {} (sharing leaf {}) is refined",
+                        chosen, a.leaf, z));
+        }
+    }
+    Active& a = active_[w];
+    a.leaf = chosen;
+    a.zone = zone_scratch_;
+    for (NodeId z : a.zone) {
+        info(z).held = true;
+        tree_.node(z).owner.store(w + 1, std::memory_order_relaxed);
+        flush_inbox(z);
+    }
+    ++report_.assignments;
+    unsigned concurrent = 0;
+    for (const Active& b : active_) concurrent += b.leaf != no_node ? 1 : 0;
+    report_.most_concurrent = std::max(report_.most_concurrent, concurrent);
+    return chosen;
+}
+
+void Scheduler::complete(Worker& worker, bool split) {
+    Active& a = active_[worker.id()];
+    const NodeId leaf = a.leaf;
+    if (split) {
+        // Publish the children before the parent turns internal: a worker
+        // that sees "internal" (acquire) finds the children's kinds set.
+        Node& n = tree_.node(leaf);
+        for (int q = 0; q < 4; ++q)
+            tree_.node(n.child(q)).kind.store(static_cast<std::uint8_t>(NodeKind::leaf), std::memory_order_release);
+        n.kind.store(static_cast<std::uint8_t>(NodeKind::internal), std::memory_order_release);
+        ++report_.splits;
+        report_.depth = std::max(report_.depth, int(n.level) + 1);
+    }
+    for (NodeId z : a.zone) {
+        info(z).held = false;
+        tree_.node(z).owner.store(0, std::memory_order_relaxed);
+    }
+    if (split) {
+        const Node& n = tree_.node(leaf);
+        for (int q = 0; q < 4; ++q) tree_.node(n.child(q)).owner.store(0, std::memory_order_relaxed);
+    }
+    for (NodeId z : a.zone) {
+        flush_inbox(z);
+        if (tree_.node(z).get_kind() == NodeKind::leaf) {
+            offer(z);
+        } else {
+            const Node& n = tree_.node(z);
+            for (int q = 0; q < 4; ++q) offer(n.child(q));
+        }
+    }
+    a.leaf = no_node;
+    a.zone.clear();
+    for (const Routed& r : worker.outbox) deliver(r);
+    worker.outbox.clear();
+    if (worker.outgrew_root) serial_ = true;
+}
+
+// ---- checked mode ---------------------------------------------------------------
+
+void verify_quadtree(const mesh::Mesh& mesh, Quadtree& tree, const CellRecords& records,
+                     std::vector<std::string>& problems) {
+    const std::size_t before = problems.size();
+    auto problem = [&](std::string s) {
+        if (problems.size() - before < 20) problems.push_back(std::move(s));
+    };
+    std::unordered_map<NodeId, std::int32_t> expected;
+    bool outgrew = false;
+    std::vector<NodeId> stack;
+    mesh::for_each_triangle(mesh, [&](mesh::TriangleId id, const mesh::Triangle& t) {
+        const geometry::Circle c = geometry::circumcircle(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]));
+        const CellRecord record = cell_record(tree, c.centre, c.radius_squared, outgrew);
+        const std::uint32_t i = mesh::index(id);
+        const CellRecord stored = records.has_chunk(i >> 16) ? records[i] : 0;
+        if (record != stored) problem(fmt::format("triangle {}: counter record {:x}, expected {:x}", i, stored, record));
+        if (record != 0) {
+            const int level = int((record >> 56) & 63u);
+            const unsigned mask = unsigned((record >> 52) & 15u);
+            const auto x0 = std::uint32_t((record >> 26) & ((1u << 26) - 1)), y0 = std::uint32_t(record & ((1u << 26) - 1));
+            for (unsigned b = 0; b < 4; ++b) {
+                if (!(mask & (1u << b))) continue;
+                NodeId leaf;
+                const NodeId n = tree.cell(Quadtree::root(), level, x0 + (b & 1u), y0 + (b >> 1), nullptr, leaf);
+                if (n == no_node)
+                    problem(fmt::format("triangle {}: its counter cell was never made", i));
+                else
+                    ++expected[n];
+            }
+        }
+        // Relation (9), with effective sides, for every leaf the disk meets.
+        const double r = std::sqrt(c.radius_squared);
+        stack.assign(1, Quadtree::root());
+        while (!stack.empty()) {
+            const NodeId n = stack.back();
+            stack.pop_back();
+            if (!disk_meets(tree.square(n), c.centre, r)) continue;
+            if (tree.node(n).get_kind() == NodeKind::internal) {
+                for (int q = 0; q < 4; ++q) stack.push_back(tree.node(n).child(q));
+                continue;
+            }
+            if (!(r < tree.effective_side(n) / 4))
+                problem(fmt::format("relation (9) fails: triangle {} (r = {}) meets leaf {} of effective side {}", i,
+                                    r, n, tree.effective_side(n)));
+        }
+    });
+    for (NodeId n = 0; n < tree.node_end(); ++n) {
+        const auto it = expected.find(n);
+        const std::int32_t want = it == expected.end() ? 0 : it->second;
+        const std::int32_t have = tree.node(n).count.load(std::memory_order_relaxed);
+        if (want != have) problem(fmt::format("quadtree node {}: count {}, expected {}", n, have, want));
+    }
+    std::vector<NodeId> leaves;
+    tree.leaves(leaves);
+    double area = 0;
+    for (NodeId l : leaves) {
+        const Square s = tree.square(l);
+        area += s.side * s.side;
+        if (tree.node(l).get_kind() != NodeKind::leaf || tree.node(l).state == nullptr)
+            problem(fmt::format("quadtree node {} is neither internal nor a leaf with work lists", l));
+        if (tree.node(l).owner.load(std::memory_order_relaxed) != 0)
+            problem(fmt::format("leaf {} is still held while no worker is busy", l));
+    }
+    const Square root = tree.square(Quadtree::root());
+    if (std::abs(area - root.side * root.side) > 1e-9 * root.side * root.side)
+        problem("the leaves do not tile the root square");
+}
+
+}  // namespace gpdr::parallel

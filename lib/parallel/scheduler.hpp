@@ -1,0 +1,100 @@
+#pragma once
+// The master's scheduling decisions, in one place (DESIGN.md: a later goal
+// is the same output for any thread count, which will change only this
+// class): which leaf a free worker gets, and what happens when it returns.
+//
+// Buffer zones.  BUF(L) = { L' != L : dist(L, L') < (ℓe(L) + ℓe(L'))/2 },
+// Z(L) = {L} ∪ BUF(L) (quadtree.hpp for ℓe; ℓe = ℓ while relation (9)
+// holds).  A leaf is handed out only when no leaf of its zone is held, i.e.
+// when Z(L) ∩ Z(M) = ∅ for every leaf M being refined: the paper's "no leaf
+// in its buffer zone, nor in the buffer zones of those" (BUF is symmetric).
+//
+// Why that is enough (the invariants the workers rely on):
+//   (a) Reach.  For p in L, every triangle t in p's cavity has p inside its
+//       circumdisk, so the disk meets L and r(t) < ℓe(L)/4: all of the closed
+//       disk lies within 2r < ℓe(L)/2 of p.  So the cavity lies in U(L), the
+//       open ℓe(L)/2-neighbourhood of L, and so do the new triangles (they
+//       fill the cavity).  A triangle created larger than (9) allows (an
+//       "exception") still lies in U(L) as a point set, and a later cavity
+//       of the same worker can only reach it from inside U(L).
+//   (b) Disjointness.  A point x in U(L) ∩ U(M) lies in some leaf X with
+//       dist(L, X) < ℓe(L)/2 <= (ℓe(L) + ℓe(X))/2, so X ∈ Z(L), and
+//       likewise X ∈ Z(M): impossible when the zones are disjoint.  So two
+//       workers' cavities and new triangles never share a triangle.
+//   (c) Neighbour links.  A triangle next to L's cavity gets only the link
+//       across a cavity edge rewritten, and that edge lies in U(L).  Another
+//       worker reads the links of such a triangle only for its own cavity
+//       edges (in U(M)) or for edges at its own vertices (in U(M)): other
+//       fields.  Nothing else of it is written.
+//   (d) Counters and buckets.  A triangle of circumradius r counted in cell
+//       C at level k (ℓ_k > 4r) whose disk contains p ∈ L lies within 2r of
+//       p; if C is at or below a leaf Y then ℓ(Y) >= ℓ_k > 4r, so
+//       dist(L, Y) < ℓ(Y)/2 and Y ∈ Z(L): a worker writes plain counts only
+//       in its own zone, and atomic ones in internal nodes.  Work for a leaf
+//       outside the zone goes through the master.
+//   (e) Stale queue entries are recognised by the slot's generation alone,
+//       read atomically, before anything else of a slot that another worker
+//       may be reusing is read (mesh/triangle.hpp).
+// A triangle larger than the root allows (never, while (9) holds for the
+// root) would void (a); the scheduler then hands out one leaf at a time.
+
+#include <cstdint>
+#include <queue>
+#include <string>
+#include <vector>
+
+#include "parallel/quadtree.hpp"
+#include "parallel/refine_parallel.hpp"
+#include "parallel/worker.hpp"
+
+namespace gpdr::parallel {
+
+class Scheduler {
+public:
+    Scheduler(Quadtree& tree, ParallelReport& report, bool checked) : tree_(tree), report_(report), checked_(checked) {}
+
+    // Queues a leaf that may have work (master thread only, leaf not held).
+    void offer(NodeId leaf);
+    // The next leaf for worker w, its zone held for w; no_node if none can
+    // be handed out now.
+    NodeId assign(int w, unsigned busy);
+    // Worker w returned its leaf (split or not): frees its zone, applies
+    // the split, takes the worker's outbox.
+    void complete(Worker& worker, bool split);
+    // Work for a leaf outside the sender's zone.
+    void deliver(const Routed& r);
+    bool serial() const { return serial_; }
+    void set_serial() { serial_ = true; }
+
+private:
+    struct Info {
+        bool held = false;
+        std::vector<Routed> inbox;
+    };
+    struct Active {
+        NodeId leaf = no_node;
+        std::vector<NodeId> zone;
+    };
+    Info& info(NodeId id);
+    bool has_work(NodeId leaf) const;
+    long key(NodeId leaf) const;
+    void push_into(NodeId leaf, const Routed& r);
+    void flush_inbox(NodeId leaf);
+
+    Quadtree& tree_;
+    ParallelReport& report_;
+    bool checked_;
+    bool serial_ = false;
+    std::vector<Info> info_;
+    std::priority_queue<std::pair<long, NodeId>, std::vector<std::pair<long, NodeId>>, std::greater<>> queue_;
+    std::vector<Active> active_;
+    std::vector<NodeId> zone_scratch_;
+};
+
+// Checked mode: the quadtree invariants on a quiescent mesh (no worker
+// busy): exact counters and records, relation (9) with effective sides for
+// every leaf, leaves tiling the root.  Problems are appended to `problems`.
+void verify_quadtree(const mesh::Mesh& mesh, Quadtree& tree, const CellRecords& records,
+                     std::vector<std::string>& problems);
+
+}  // namespace gpdr::parallel

@@ -1,0 +1,258 @@
+// One refinement thread (see worker.hpp): Fig. 4 of the GPDR paper on a leaf,
+// the quadtree counters, routing of handed-off work, leaf splitting.
+
+#include "parallel/worker.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cmath>
+
+#include "geometry/constructions.hpp"
+#include "mesh/traverse.hpp"
+#include "refine/segments.hpp"
+
+namespace gpdr::parallel {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+constexpr std::uint64_t coordinate_mask = (std::uint64_t{1} << 26) - 1;
+
+bool finite(const Point& p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+
+}  // namespace
+
+CellRecord cell_record(const Quadtree& tree, const Point& centre, double radius_squared, bool& outgrew_root) {
+    const double r = std::sqrt(radius_squared);
+    int k = tree.level_of_radius(r);
+    if (k > max_level) return 0;  // too small to matter for any leaf we may make
+    if (k < 0) {
+        // Larger than the root allows (cannot happen while relation (9)
+        // holds for the root; the scheduler then runs one leaf at a time).
+        outgrew_root = true;
+        return (std::uint64_t{1} << 63) | (std::uint64_t{1} << 52);
+    }
+    const std::uint32_t x_lo = tree.cell_x(centre.x - r, k), x_hi = tree.cell_x(centre.x + r, k);
+    const std::uint32_t y_lo = tree.cell_y(centre.y - r, k), y_hi = tree.cell_y(centre.y + r, k);
+    std::uint64_t mask = 0;
+    for (std::uint32_t dy = 0; dy < 2; ++dy)
+        for (std::uint32_t dx = 0; dx < 2; ++dx) {
+            if (x_lo + dx > x_hi || y_lo + dy > y_hi) continue;
+            if (disk_meets(tree.cell_square(k, x_lo + dx, y_lo + dy), centre, r)) mask |= 1u << (dx + 2 * dy);
+        }
+    if (mask == 0) mask = 1;  // a disk (nearly) outside the root: count it in the nearest cell
+    return (std::uint64_t{1} << 63) | (std::uint64_t(k) << 56) | (mask << 52) | (std::uint64_t(x_lo) << 26) |
+           std::uint64_t(y_lo);
+}
+
+Worker::Worker(int id, mesh::Mesh& mesh, refine::RefineRun& run, Quadtree& tree, CellRecords& records,
+               const ParallelOptions& options)
+    : id_(id),
+      mesh_(mesh),
+      run_(run),
+      tree_(tree),
+      records_(records),
+      options_(options),
+      pool_(mesh),
+      refiner_(run, pool_, report) {
+    refiner_.set_observer(this);
+}
+
+LeafState* Worker::new_leaf_state(const Square& s) { return &leaf_states_.emplace_back(s); }
+
+// ---- counters ------------------------------------------------------------------
+
+void Worker::apply(CellRecord record, int delta, bool check_zone) {
+    const int level = static_cast<int>((record >> 56) & 63u);
+    const unsigned mask = static_cast<unsigned>((record >> 52) & 15u);
+    const auto x0 = static_cast<std::uint32_t>((record >> 26) & coordinate_mask);
+    const auto y0 = static_cast<std::uint32_t>(record & coordinate_mask);
+    for (unsigned b = 0; b < 4; ++b) {
+        if (!(mask & (1u << b))) continue;
+        const std::uint32_t ix = x0 + (b & 1u), iy = y0 + (b >> 1);
+        // Start at the leaf being refined when the cell is inside it (the
+        // common case: no walk from the root).
+        NodeId start = Quadtree::root();
+        if (current_ != no_node) {
+            const Node& c = tree_.node(current_);
+            const int shift = level - c.level;
+            if (shift >= 0 && (ix >> shift) == c.ix && (iy >> shift) == c.iy) start = current_;
+        }
+        NodeId leaf = no_node;
+        Node& n = tree_.node(tree_.cell(start, level, ix, iy, &nodes_, leaf));
+        if (n.get_kind() == NodeKind::internal) {
+            // Above a leaf: relation (9) does not hold there (quadtree.hpp).
+            n.count.fetch_add(delta, std::memory_order_relaxed);
+            if (delta > 0) ++relation9_exceptions;
+        } else {
+            n.count.store(n.count.load(std::memory_order_relaxed) + delta, std::memory_order_relaxed);
+            if (check_zone && leaf != no_node && tree_.node(leaf).owner.load(std::memory_order_relaxed) != id_ + 1)
+                ++zone_escapes;
+        }
+    }
+}
+
+void Worker::count(mesh::TriangleId t) {
+    const mesh::Triangle& r = mesh_.triangle(t);
+    const geometry::Circle c =
+        geometry::circumcircle(mesh_.point(r.v[0]), mesh_.point(r.v[1]), mesh_.point(r.v[2]));
+    const CellRecord record = cell_record(tree_, c.centre, c.radius_squared, outgrew_root);
+    const std::uint32_t i = mesh::index(t);
+    records_.ensure(i >> 16);
+    records_[i] = record;
+    if (record != 0) apply(record, +1, current_ != no_node);
+}
+
+void Worker::uncount(mesh::TriangleId t) {
+    const std::uint32_t i = mesh::index(t);
+    if (!records_.has_chunk(i >> 16)) return;
+    const CellRecord record = records_[i];
+    if (record == 0) return;
+    records_[i] = 0;
+    apply(record, -1, false);
+}
+
+void Worker::count_all() {
+    mesh::for_each_triangle(mesh_, [&](mesh::TriangleId id, const mesh::Triangle&) { count(id); });
+}
+
+void Worker::mesh_changed(std::span<const mesh::TriangleId> killed, std::span<const mesh::TriangleId> created) {
+    // Killed first: their slots may be reused in `created`.  Then each
+    // created triangle drops whatever its slot still counted (a triangle a
+    // flip changed in place) and is counted afresh.
+    for (mesh::TriangleId t : killed) uncount(t);
+    for (mesh::TriangleId t : created) {
+        uncount(t);
+        count(t);
+    }
+}
+
+// ---- routing ---------------------------------------------------------------------
+
+void Worker::deliver(const Routed& r, NodeId splitting) {
+    NodeId x;
+    if (splitting != no_node && tree_.square(splitting).contains(r.at)) {
+        const Square s = tree_.square(splitting);
+        const double half = 0.5 * s.side;
+        const int q = (r.at.x >= s.x0 + half ? 1 : 0) | (r.at.y >= s.y0 + half ? 2 : 0);
+        x = tree_.node(splitting).child(q);
+    } else {
+        x = tree_.leaf_at(r.at);
+    }
+    Node& n = tree_.node(x);
+    if (std::getenv("GPDR_TRACE") && !r.is_triangle) std::fprintf(stderr, "DELIVER sub to %u kind %d owner %d state %p\n", x, int(n.get_kind()), n.owner.load(), (void*)n.state);
+    if (n.get_kind() != NodeKind::internal && n.state != nullptr &&
+        n.owner.load(std::memory_order_relaxed) == id_ + 1) {
+        // A leaf of this worker's zone (Fig. 4 line 9).
+        refine::Leaf& w = n.state->work;
+        if (r.is_triangle)
+            w.push_poor(r.triangle, w.sigma(r.radius_squared), r.rank);
+        else
+            w.push_subsegment(r.subsegment);
+        ++handed_off_local;
+    } else {
+        outbox.push_back(r);
+    }
+}
+
+void Worker::route_triangle(refine::QueuedTriangle q, bool steiner_point_if_centre_inside, const Square& inside,
+                            NodeId splitting) {
+    const mesh::Triangle& t = mesh_.triangle(q.id);
+    if (t.load_generation() != q.generation || !t.live()) return;  // stale (generation first: mesh/triangle.hpp)
+    const refine::TriangleMeasures m =
+        refine::QualityTest::measure(mesh_.point(t.v[0]), mesh_.point(t.v[1]), mesh_.point(t.v[2]));
+    Routed r;
+    r.triangle = q;
+    r.at = m.circle.centre;
+    r.radius_squared = m.circle.radius_squared;
+    r.rank = run_.quality().shape_rank(m.shortest.length_squared, m.circle.radius_squared, refine::Leaf::rank_count);
+    // Classification routes by circumcentre, refinement by the Steiner
+    // point f(t): a triangle handed off although its centre is inside was
+    // handed off for its Steiner point, and one kept although its centre is
+    // outside was kept for it.
+    if (inside.contains(r.at) == steiner_point_if_centre_inside) {
+        const refine::PoorTriangle p = refine::describe_poor_triangle(mesh_, q.id, run_.quality());
+        // Exactly refine_triangle's choice, so that the leaf it lands in takes it.
+        const Point f = run_.strategy().place(p, scratch_);
+        if (finite(f)) r.at = f;
+    }
+    deliver(r, splitting);
+}
+
+void Worker::route_subsegment(refine::QueuedSubsegment s, NodeId splitting) {
+    const mesh::Triangle& t = mesh_.triangle(s.edge.triangle());
+    if (t.load_generation() != s.generation || !t.live()) {
+        if (std::getenv("GPDR_TRACE")) std::fprintf(stderr, "STALE sub gen %u vs %u live %d\n", t.load_generation(), s.generation, int(t.live()));
+        return;
+    }
+    const Point& a = mesh_.point(mesh_.origin(s.edge));
+    const Point& b = mesh_.point(mesh_.destination(s.edge));
+    Routed r;
+    r.is_triangle = false;
+    r.subsegment = s;
+    r.at = geometry::point_on_segment(a, b, refine::split_parameter(mesh_, s.edge));
+    deliver(r, splitting);
+}
+
+// ---- one leaf ----------------------------------------------------------------------
+
+bool Worker::split(NodeId leaf) {
+    // Line 13: the children's counts are already exact (shadow nodes), and
+    // the leaf's own count is 0, so (9) holds for each child.
+    const Square s = tree_.square(leaf);
+    for (int q = 0; q < 4; ++q) {
+        const NodeId c = tree_.child(leaf, q, nodes_);
+        Node& n = tree_.node(c);
+        n.state = new_leaf_state(tree_.square(c));
+        n.owner.store(id_ + 1, std::memory_order_relaxed);
+    }
+    refine::Leaf& work = tree_.node(leaf).state->work;
+    for (int j = work.lowest_level(); j >= 0 && j < refine::Leaf::bucket_count; ++j) {
+        refine::QueuedTriangle q;
+        while (work.pop_poor(j, q)) route_triangle(q, false, s, leaf);
+    }
+    refine::QueuedSubsegment e;
+    while (work.pop_subsegment(e)) route_subsegment(e, leaf);
+    return true;
+}
+
+bool Worker::run(NodeId leaf) {
+    const auto t0 = Clock::now();
+    current_ = leaf;
+    Node& n = tree_.node(leaf);
+    LeafState& state = *n.state;
+    const std::uint64_t created_before = report.triangles_created;
+    if (!refiner_.refine_leaf(state.work)) stopped = true;
+    const std::uint64_t created = report.triangles_created - created_before;
+    const auto t1 = Clock::now();
+    times.refining += std::chrono::duration<double>(t1 - t0).count();
+
+    if (std::getenv("GPDR_TRACE") && !state.work.handed_off_subsegments.empty()) {
+        for (const auto& h : state.work.handed_off_subsegments) {
+            const Point& a = mesh_.point(mesh_.origin(h.edge));
+            const Point& b = mesh_.point(mesh_.destination(h.edge));
+            const Point p = geometry::point_on_segment(a, b, refine::split_parameter(mesh_, h.edge));
+            std::fprintf(stderr, "SUB leaf %u sq %g %g %g  a %g %g b %g %g p %g %g -> leaf %u\n", leaf, state.square.x0,
+                         state.square.y0, state.square.side, a.x, a.y, b.x, b.y, p.x, p.y, tree_.leaf_at(p));
+        }
+    }
+    std::vector<refine::QueuedTriangle> triangles;
+    triangles.swap(state.work.handed_off_triangles);
+    for (const auto& q : triangles) route_triangle(q, true, state.square, no_node);
+    std::vector<refine::QueuedSubsegment> subsegments;
+    subsegments.swap(state.work.handed_off_subsegments);
+    for (const auto& s : subsegments) route_subsegment(s, no_node);
+
+    bool split_now = false;
+    if (!stopped && created >= options_.split_work && n.level < max_level &&
+        n.count.load(std::memory_order_relaxed) == 0)
+        split_now = split(leaf);
+    current_ = no_node;
+    times.managing += seconds_since(t1);
+    return split_now;
+}
+
+}  // namespace gpdr::parallel

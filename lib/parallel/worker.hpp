@@ -1,0 +1,109 @@
+#pragma once
+// One refinement thread of the parallel refiner (GPDR paper Fig. 4): its
+// pool, its LeafRefiner, the upkeep of the quadtree counters for every
+// triangle it creates or kills, routing of work that belongs to other
+// leaves, and splitting its leaf.
+//
+// What a worker touches while it refines leaf L (the contract the master's
+// buffer zones guarantee; see scheduler.hpp for the proof): triangles in the
+// cavities of points in L and their neighbours' links, the quadtree nodes at
+// and below the leaves of L's zone, and those leaves' buckets.  The only
+// shared writes outside that are atomic: the Steiner count, the node and
+// triangle-slot allocators, and counts of internal nodes (relation (9)
+// exceptions, quadtree.hpp).
+
+#include <cstdint>
+#include <deque>
+#include <vector>
+
+#include "mesh/pool.hpp"
+#include "parallel/quadtree.hpp"
+#include "parallel/refine_parallel.hpp"
+#include "refine/refine.hpp"
+
+namespace gpdr::parallel {
+
+// A leaf's refinement work: the paper's PoorTriangles_i(Leaf) and the queue
+// of subsegments to split, with the leaf's square for the ownership hook.
+struct LeafState {
+    explicit LeafState(const Square& s) : work(s.side), square(s) { work.set_owner(&owns, this); }
+    static bool owns(const void* self, const Point& p) { return static_cast<const LeafState*>(self)->square.contains(p); }
+
+    refine::Leaf work;
+    Square square;
+};
+
+// Work for a leaf outside the routing worker's zone, sent to the master.
+struct Routed {
+    bool is_triangle = true;
+    refine::QueuedTriangle triangle{};
+    refine::QueuedSubsegment subsegment{};
+    Point at;                 // the point that decides the leaf
+    double radius_squared = 0; // triangles: for the target leaf's σ
+    int rank = 0;             // triangles: shape rank
+};
+
+// Per-triangle-slot record of the cells a triangle is counted in:
+// bit 63 set, level (6 bits) << 56, cell mask (4 bits) << 52, ix << 26, iy
+// (26 bits each); 0 = not counted.
+using CellRecord = std::uint64_t;
+using CellRecords = mesh::ChunkTable<CellRecord, 16, (mesh::max_triangles >> 16)>;
+
+// Computes the record of a triangle with this circumcircle (pure).
+CellRecord cell_record(const Quadtree& tree, const Point& centre, double radius_squared, bool& outgrew_root);
+
+class Worker final : public refine::MeshObserver {
+public:
+    Worker(int id, mesh::Mesh& mesh, refine::RefineRun& run, Quadtree& tree, CellRecords& records,
+           const ParallelOptions& options);
+
+    // Counts every live triangle (single-threaded, before refinement starts).
+    void count_all();
+    // Refines leaf `leaf` (the master has made the worker the owner of its
+    // zone): Fig. 4 lines 1-12, routing of handed-off work, and the split
+    // (line 13).  Returns whether the leaf split.
+    bool run(NodeId leaf);
+
+    void mesh_changed(std::span<const mesh::TriangleId> killed, std::span<const mesh::TriangleId> created) override;
+
+    LeafState* new_leaf_state(const Square& s);
+
+    refine::RefineReport report;
+    std::vector<Routed> outbox;  // emptied by the master after each run
+    ThreadTimes times;
+    std::uint64_t handed_off_local = 0;
+    std::uint64_t relation9_exceptions = 0;
+    std::uint64_t zone_escapes = 0;
+    bool outgrew_root = false;
+    bool stopped = false;
+    mesh::Pool& pool() { return pool_; }
+    refine::LeafRefiner& refiner() { return refiner_; }
+    int id() const { return id_; }
+
+private:
+    void count(mesh::TriangleId t);
+    void uncount(mesh::TriangleId t);
+    void apply(CellRecord record, int delta, bool check_zone);
+    // Where the work item should go: a leaf of this worker's zone (pushed
+    // there) or the master's outbox.
+    void route_triangle(refine::QueuedTriangle q, bool steiner_point_if_centre_inside, const Square& inside,
+                        NodeId splitting);
+    void route_subsegment(refine::QueuedSubsegment s, NodeId splitting);
+    void deliver(const Routed& r, NodeId splitting);
+    bool split(NodeId leaf);
+
+    int id_;
+    mesh::Mesh& mesh_;
+    refine::RefineRun& run_;
+    Quadtree& tree_;
+    CellRecords& records_;
+    const ParallelOptions& options_;
+    mesh::Pool pool_;
+    refine::LeafRefiner refiner_;
+    NodeAllocator nodes_;
+    std::deque<LeafState> leaf_states_;
+    NodeId current_ = no_node;
+    refine::PlacementScratch scratch_;
+};
+
+}  // namespace gpdr::parallel

@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
 # Sets up and builds gpdr (scripts/setup.sh), then runs the whole test suite:
-# the Catch2 unit and CLI tests through CTest, and the parallel tests again in
-# a ThreadSanitizer build.  This is what .ci/run runs.
+# the parallel tests under ThreadSanitizer, then the Catch2 unit and CLI
+# tests through CTest.  This is what .ci/run runs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 scripts/setup.sh
 jobs=${JOBS:-$(nproc)}
+# The parallel tests again under ThreadSanitizer (a build of their own in
+# build-tsan), first, so that CTest's summary of the whole suite comes last.
+scripts/test-tsan.sh
 ctest --test-dir build --output-on-failure -j "$jobs"

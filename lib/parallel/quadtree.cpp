@@ -16,16 +16,12 @@ double distance(const Square& a, const Square& b) {
     return std::hypot(gx, gy);
 }
 
-bool disk_meets(const Square& s, const Point& c, double r) {
-    const double dx = std::max({0.0, s.x0 - c.x, c.x - (s.x0 + s.side)});
-    const double dy = std::max({0.0, s.y0 - c.y, c.y - (s.y0 + s.side)});
-    // A hair of slack: counting a cell the disk only grazes is safe (it can
-    // only delay a split), missing one is not.
-    const double rr = r * (1.0 + 0x1p-30);
-    return dx * dx + dy * dy <= rr * rr;
-}
 
 Quadtree::Quadtree(double x0, double y0, double side) : x0_(x0), y0_(y0), side_(side) {
+    for (int k = 0; k <= max_level + 1; ++k) {
+        sides_[k] = std::ldexp(side, -k);
+        inverse_sides_[k] = 1.0 / sides_[k];
+    }
     NodeAllocator a;
     const NodeId root = allocate(a);
     Node& n = node(root);
@@ -33,40 +29,14 @@ Quadtree::Quadtree(double x0, double y0, double side) : x0_(x0), y0_(y0), side_(
     // The rest of the block is left unused (ids are cheap).
 }
 
-double Quadtree::side_at(int level) const { return std::ldexp(side_, -level); }
-
 Square Quadtree::square(NodeId id) const {
     const Node& n = node(id);
     const double s = side_at(n.level);
     return {x0_ + s * n.ix, y0_ + s * n.iy, s};
 }
 
-Square Quadtree::cell_square(int level, std::uint32_t ix, std::uint32_t iy) const {
-    const double s = side_at(level);
-    return {x0_ + s * ix, y0_ + s * iy, s};
-}
 
-std::uint32_t Quadtree::cell_x(double x, int level) const {
-    const double f = std::floor((x - x0_) / side_at(level));
-    const double top = std::ldexp(1.0, level) - 1;
-    return static_cast<std::uint32_t>(std::clamp(f, 0.0, top));
-}
-std::uint32_t Quadtree::cell_y(double y, int level) const {
-    const double f = std::floor((y - y0_) / side_at(level));
-    const double top = std::ldexp(1.0, level) - 1;
-    return static_cast<std::uint32_t>(std::clamp(f, 0.0, top));
-}
 
-int Quadtree::level_of_radius(double r) const {
-    if (!(r > 0) || !std::isfinite(r)) return max_level + 1;
-    const double x = side_ / (4.0 * r);
-    if (!(x > 1.0)) return -1;
-    int k = std::ilogb(x);
-    if (k > max_level + 1) return max_level + 1;
-    if (!(side_at(k) > 4.0 * r)) --k;  // ℓ_k must exceed 4r strictly
-    if (k < 0) return -1;
-    return std::min(k, max_level + 1);
-}
 
 NodeId Quadtree::allocate(NodeAllocator& alloc) {
     if (alloc.next == alloc.end) {

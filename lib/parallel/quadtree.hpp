@@ -32,7 +32,9 @@
 // (atomic read-modify-write).  `kind` changes only on the master thread
 // (release), and workers descend through internal nodes with acquire loads.
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -76,7 +78,14 @@ struct Square {
 // Euclidean distance between two squares (0 when they touch or overlap).
 double distance(const Square& a, const Square& b);
 // Whether the closed disk (centre c, radius r) meets the square.
-bool disk_meets(const Square& s, const Point& c, double r);
+inline bool disk_meets(const Square& s, const Point& c, double r) {
+    const double dx = std::max({0.0, s.x0 - c.x, c.x - (s.x0 + s.side)});
+    const double dy = std::max({0.0, s.y0 - c.y, c.y - (s.y0 + s.side)});
+    // A hair of slack: counting a cell the disk only grazes is safe (it can
+    // only delay a split), missing one is not.
+    const double rr = r * (1.0 + 0x1p-30);
+    return dx * dx + dy * dy <= rr * rr;
+}
 
 // Node ids for one thread: blocks claimed from the tree with one atomic add.
 struct NodeAllocator {
@@ -88,19 +97,39 @@ public:
     // The root square (x0, y0, side); the root starts as the only leaf.
     Quadtree(double x0, double y0, double side);
 
-    double side_at(int level) const;
+    double side_at(int level) const { return sides_[level]; }
     Square square(NodeId id) const;
-    Square cell_square(int level, std::uint32_t ix, std::uint32_t iy) const;
+    Square cell_square(int level, std::uint32_t ix, std::uint32_t iy) const {
+        const double s = side_at(level);
+        return {x0_ + s * ix, y0_ + s * iy, s};
+    }
     Node& node(NodeId id) const { return nodes_[id]; }
     static constexpr NodeId root() { return 0; }
     std::uint32_t node_end() const { return next_.load(std::memory_order_acquire); }
 
     // Cell coordinate of x at `level`, clamped into the root.
-    std::uint32_t cell_x(double x, int level) const;
-    std::uint32_t cell_y(double y, int level) const;
+    std::uint32_t cell_x(double x, int level) const {
+    const double f = std::floor((x - x0_) * inverse_sides_[level]);
+    const double top = double((std::uint32_t{1} << level) - 1);
+    return static_cast<std::uint32_t>(std::clamp(f, 0.0, top));
+}
+    std::uint32_t cell_y(double y, int level) const {
+    const double f = std::floor((y - y0_) * inverse_sides_[level]);
+    const double top = double((std::uint32_t{1} << level) - 1);
+    return static_cast<std::uint32_t>(std::clamp(f, 0.0, top));
+}
     // The level a triangle of circumradius r is counted at (see above), -1
     // when r >= ℓ_root / 4, or max_level + 1 when it is too small to matter.
-    int level_of_radius(double r) const;
+    int level_of_radius(double r) const {
+    if (!(r > 0) || !std::isfinite(r)) return max_level + 1;
+    const double x = side_ / (4.0 * r);
+    if (!(x > 1.0)) return -1;
+    int k = std::ilogb(x);
+    if (k > max_level) return max_level + 1;
+    if (!(side_at(k) > 4.0 * r)) --k;  // ℓ_k must exceed 4r strictly
+    if (k < 0) return -1;
+    return std::min(k, max_level + 1);
+}
 
     // The node of cell (level, ix, iy), descending from `from` (an
     // ancestor-or-self of it).  Missing shadow nodes below leaves are made
@@ -125,6 +154,8 @@ private:
     void zone_search(NodeId n, const Square& target, double target_side, double above, std::vector<NodeId>& out) const;
 
     double x0_, y0_, side_;
+    double sides_[max_level + 2];      // ℓ_k
+    double inverse_sides_[max_level + 2];  // 1 / ℓ_k
     mutable mesh::ChunkTable<Node, 12, (1u << 20)> nodes_;
     std::atomic<std::uint32_t> next_{0};
 };

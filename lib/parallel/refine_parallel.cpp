@@ -13,8 +13,6 @@
 #include <memory>
 #include <mutex>
 #include <thread>
-#include <cstdio>
-#include <cstdlib>
 
 #include "geometry/constructions.hpp"
 #include "mesh/traverse.hpp"
@@ -88,7 +86,7 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in
 
     // The first leaf: the root, every triangle counted and classified.
     Node& root_node = tree.node(Quadtree::root());
-    root_node.state = workers[0]->new_leaf_state(root);
+    root_node.state = workers[0]->new_leaf_state(Quadtree::root());
     workers[0]->count_all();
     workers[0]->refiner().classify_all(root_node.state->work);
     {
@@ -131,12 +129,6 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in
             const auto t1 = Clock::now();
             report.master.managing += seconds(t0, t1);
             const bool split = worker.run(leaf);
-            if (std::getenv("GPDR_TRACE") && report.assignments % 1000 < 3) {
-                const auto& w = tree.node(leaf).state->work;
-                std::fprintf(stderr, "TRACE %llu leaf %u level %d poor %zu sub %zu steiner %llu split %d\n",
-                             (unsigned long long)report.assignments, leaf, int(tree.node(leaf).level), w.poor_entries(),
-                             w.subsegment_entries(), (unsigned long long)worker.report.steiner_points, int(split));
-            }
             const auto t2 = Clock::now();
             scheduler.complete(worker, split);
             if (options.checked) check();

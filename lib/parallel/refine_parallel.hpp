@@ -72,8 +72,9 @@ struct ParallelOptions {
     bool one_leaf_for_one_thread = false;
 };
 
-// Granularity when none is given (measured: tests/parallel/bench_test.cpp).
-inline constexpr unsigned default_granularity = 2;
+// Granularity when none is given: -g1 was fastest for -j2 in
+// tests/parallel/bench_test.cpp (2 cores; -g2..-g4 leave fewer, larger leaves).
+inline constexpr unsigned default_granularity = 1;
 
 // Refines `mesh` (the input refine::refine_mesh takes) in parallel.  Throws
 // what refine_mesh throws; a worker's exception is rethrown on the calling

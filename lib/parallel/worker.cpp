@@ -4,9 +4,8 @@
 #include "parallel/worker.hpp"
 
 #include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
+#include <limits>
 
 #include "geometry/constructions.hpp"
 #include "mesh/traverse.hpp"
@@ -61,7 +60,18 @@ Worker::Worker(int id, mesh::Mesh& mesh, refine::RefineRun& run, Quadtree& tree,
     refiner_.set_observer(this);
 }
 
-LeafState* Worker::new_leaf_state(const Square& s) { return &leaf_states_.emplace_back(s); }
+OwnedBox owned_box(const Quadtree& tree, NodeId leaf) {
+    const Square s = tree.square(leaf);
+    const Node& n = tree.node(leaf);
+    const std::uint32_t last = (std::uint32_t{1} << n.level) - 1;
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    return {n.ix == 0 ? -inf : s.x0, n.iy == 0 ? -inf : s.y0, n.ix == last ? inf : s.x0 + s.side,
+            n.iy == last ? inf : s.y0 + s.side};
+}
+
+LeafState* Worker::new_leaf_state(NodeId leaf) {
+    return &leaf_states_.emplace_back(tree_.side_at(tree_.node(leaf).level), owned_box(tree_, leaf));
+}
 
 // ---- counters ------------------------------------------------------------------
 
@@ -73,6 +83,18 @@ void Worker::apply(CellRecord record, int delta, bool check_zone) {
     for (unsigned b = 0; b < 4; ++b) {
         if (!(mask & (1u << b))) continue;
         const std::uint32_t ix = x0 + (b & 1u), iy = y0 + (b >> 1);
+        const std::uint64_t key = (std::uint64_t(level + 1) << 52) | (std::uint64_t(ix) << 26) | iy;
+        CachedCell& cached = cache_[(key * 0x9E3779B97F4A7C15ull) >> 56];
+        if (cached.key == key && !(check_zone && options_.checked)) {
+            Node& n = tree_.node(cached.node);
+            if (n.get_kind() == NodeKind::internal) {
+                n.count.fetch_add(delta, std::memory_order_relaxed);
+                if (delta > 0) ++relation9_exceptions;
+            } else {
+                n.count.store(n.count.load(std::memory_order_relaxed) + delta, std::memory_order_relaxed);
+            }
+            continue;
+        }
         // Start at the leaf being refined when the cell is inside it (the
         // common case: no walk from the root).
         NodeId start = Quadtree::root();
@@ -82,14 +104,16 @@ void Worker::apply(CellRecord record, int delta, bool check_zone) {
             if (shift >= 0 && (ix >> shift) == c.ix && (iy >> shift) == c.iy) start = current_;
         }
         NodeId leaf = no_node;
-        Node& n = tree_.node(tree_.cell(start, level, ix, iy, &nodes_, leaf));
+        const NodeId id = tree_.cell(start, level, ix, iy, &nodes_, leaf);
+        cached = {key, id};
+        Node& n = tree_.node(id);
         if (n.get_kind() == NodeKind::internal) {
             // Above a leaf: relation (9) does not hold there (quadtree.hpp).
             n.count.fetch_add(delta, std::memory_order_relaxed);
             if (delta > 0) ++relation9_exceptions;
         } else {
             n.count.store(n.count.load(std::memory_order_relaxed) + delta, std::memory_order_relaxed);
-            if (check_zone && leaf != no_node && tree_.node(leaf).owner.load(std::memory_order_relaxed) != id_ + 1)
+            if (check_zone && options_.checked && leaf != no_node && tree_.node(leaf).owner.load(std::memory_order_relaxed) != id_ + 1)
                 ++zone_escapes;
         }
     }
@@ -134,7 +158,7 @@ void Worker::mesh_changed(std::span<const mesh::TriangleId> killed, std::span<co
 
 void Worker::deliver(const Routed& r, NodeId splitting) {
     NodeId x;
-    if (splitting != no_node && tree_.square(splitting).contains(r.at)) {
+    if (splitting != no_node && tree_.node(splitting).state->box.contains(r.at)) {
         const Square s = tree_.square(splitting);
         const double half = 0.5 * s.side;
         const int q = (r.at.x >= s.x0 + half ? 1 : 0) | (r.at.y >= s.y0 + half ? 2 : 0);
@@ -143,7 +167,6 @@ void Worker::deliver(const Routed& r, NodeId splitting) {
         x = tree_.leaf_at(r.at);
     }
     Node& n = tree_.node(x);
-    if (std::getenv("GPDR_TRACE") && !r.is_triangle) std::fprintf(stderr, "DELIVER sub to %u kind %d owner %d state %p\n", x, int(n.get_kind()), n.owner.load(), (void*)n.state);
     if (n.get_kind() != NodeKind::internal && n.state != nullptr &&
         n.owner.load(std::memory_order_relaxed) == id_ + 1) {
         // A leaf of this worker's zone (Fig. 4 line 9).
@@ -158,7 +181,7 @@ void Worker::deliver(const Routed& r, NodeId splitting) {
     }
 }
 
-void Worker::route_triangle(refine::QueuedTriangle q, bool steiner_point_if_centre_inside, const Square& inside,
+void Worker::route_triangle(refine::QueuedTriangle q, bool steiner_point_if_centre_inside, const OwnedBox& inside,
                             NodeId splitting) {
     const mesh::Triangle& t = mesh_.triangle(q.id);
     if (t.load_generation() != q.generation || !t.live()) return;  // stale (generation first: mesh/triangle.hpp)
@@ -184,10 +207,7 @@ void Worker::route_triangle(refine::QueuedTriangle q, bool steiner_point_if_cent
 
 void Worker::route_subsegment(refine::QueuedSubsegment s, NodeId splitting) {
     const mesh::Triangle& t = mesh_.triangle(s.edge.triangle());
-    if (t.load_generation() != s.generation || !t.live()) {
-        if (std::getenv("GPDR_TRACE")) std::fprintf(stderr, "STALE sub gen %u vs %u live %d\n", t.load_generation(), s.generation, int(t.live()));
-        return;
-    }
+    if (t.load_generation() != s.generation || !t.live()) return;
     const Point& a = mesh_.point(mesh_.origin(s.edge));
     const Point& b = mesh_.point(mesh_.destination(s.edge));
     Routed r;
@@ -202,11 +222,11 @@ void Worker::route_subsegment(refine::QueuedSubsegment s, NodeId splitting) {
 bool Worker::split(NodeId leaf) {
     // Line 13: the children's counts are already exact (shadow nodes), and
     // the leaf's own count is 0, so (9) holds for each child.
-    const Square s = tree_.square(leaf);
+    const OwnedBox s = tree_.node(leaf).state->box;
     for (int q = 0; q < 4; ++q) {
         const NodeId c = tree_.child(leaf, q, nodes_);
         Node& n = tree_.node(c);
-        n.state = new_leaf_state(tree_.square(c));
+        n.state = new_leaf_state(c);
         n.owner.store(id_ + 1, std::memory_order_relaxed);
     }
     refine::Leaf& work = tree_.node(leaf).state->work;
@@ -230,18 +250,9 @@ bool Worker::run(NodeId leaf) {
     const auto t1 = Clock::now();
     times.refining += std::chrono::duration<double>(t1 - t0).count();
 
-    if (std::getenv("GPDR_TRACE") && !state.work.handed_off_subsegments.empty()) {
-        for (const auto& h : state.work.handed_off_subsegments) {
-            const Point& a = mesh_.point(mesh_.origin(h.edge));
-            const Point& b = mesh_.point(mesh_.destination(h.edge));
-            const Point p = geometry::point_on_segment(a, b, refine::split_parameter(mesh_, h.edge));
-            std::fprintf(stderr, "SUB leaf %u sq %g %g %g  a %g %g b %g %g p %g %g -> leaf %u\n", leaf, state.square.x0,
-                         state.square.y0, state.square.side, a.x, a.y, b.x, b.y, p.x, p.y, tree_.leaf_at(p));
-        }
-    }
     std::vector<refine::QueuedTriangle> triangles;
     triangles.swap(state.work.handed_off_triangles);
-    for (const auto& q : triangles) route_triangle(q, true, state.square, no_node);
+    for (const auto& q : triangles) route_triangle(q, true, state.box, no_node);
     std::vector<refine::QueuedSubsegment> subsegments;
     subsegments.swap(state.work.handed_off_subsegments);
     for (const auto& s : subsegments) route_subsegment(s, no_node);

@@ -25,12 +25,24 @@ namespace gpdr::parallel {
 
 // A leaf's refinement work: the paper's PoorTriangles_i(Leaf) and the queue
 // of subsegments to split, with the leaf's square for the ownership hook.
+//
+// Ownership: a point belongs to the leaf whose half-open square holds it;
+// the leaves on the root's border also own everything beyond it (as
+// Quadtree::leaf_at finds them), so that every point has exactly one owner
+// (a Steiner point outside the domain, never inserted, is still taken by
+// some leaf, which splits the hull subsegment in its way).
+struct OwnedBox {
+    double x_lo, y_lo, x_hi, y_hi;
+    bool contains(const Point& p) const { return p.x >= x_lo && p.x < x_hi && p.y >= y_lo && p.y < y_hi; }
+};
+OwnedBox owned_box(const Quadtree& tree, NodeId leaf);
+
 struct LeafState {
-    explicit LeafState(const Square& s) : work(s.side), square(s) { work.set_owner(&owns, this); }
-    static bool owns(const void* self, const Point& p) { return static_cast<const LeafState*>(self)->square.contains(p); }
+    LeafState(double side, const OwnedBox& b) : work(side), box(b) { work.set_owner(&owns, this); }
+    static bool owns(const void* self, const Point& p) { return static_cast<const LeafState*>(self)->box.contains(p); }
 
     refine::Leaf work;
-    Square square;
+    OwnedBox box;
 };
 
 // Work for a leaf outside the routing worker's zone, sent to the master.
@@ -66,7 +78,7 @@ public:
 
     void mesh_changed(std::span<const mesh::TriangleId> killed, std::span<const mesh::TriangleId> created) override;
 
-    LeafState* new_leaf_state(const Square& s);
+    LeafState* new_leaf_state(NodeId leaf);
 
     refine::RefineReport report;
     std::vector<Routed> outbox;  // emptied by the master after each run
@@ -86,7 +98,7 @@ private:
     void apply(CellRecord record, int delta, bool check_zone);
     // Where the work item should go: a leaf of this worker's zone (pushed
     // there) or the master's outbox.
-    void route_triangle(refine::QueuedTriangle q, bool steiner_point_if_centre_inside, const Square& inside,
+    void route_triangle(refine::QueuedTriangle q, bool steiner_point_if_centre_inside, const OwnedBox& inside,
                         NodeId splitting);
     void route_subsegment(refine::QueuedSubsegment s, NodeId splitting);
     void deliver(const Routed& r, NodeId splitting);
@@ -103,6 +115,13 @@ private:
     NodeAllocator nodes_;
     std::deque<LeafState> leaf_states_;
     NodeId current_ = no_node;
+    // Cells found lately: consecutive triangles mostly share cells, and a
+    // cell's node never changes (nodes are never freed).
+    struct CachedCell {
+        std::uint64_t key = 0;
+        NodeId node = no_node;
+    };
+    CachedCell cache_[256];
     refine::PlacementScratch scratch_;
 };
 

@@ -1,0 +1,182 @@
+// Parallel refinement (lib/parallel): meshes from any thread count and
+// granularity are valid and meet the bounds -j1 meets, with about as many
+// triangles; the quadtree invariants (exact counters, relation (9) with
+// effective sides, leaves tiling the root) and buffer-zone exclusivity hold
+// after every leaf refinement in checked mode; a stress run over random
+// point sets and PSLGs.  Run the whole file under ThreadSanitizer with
+// scripts/test-tsan.sh.
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <random>
+
+#include "parallel/refine_parallel.hpp"
+#include "refine/refine_support.hpp"
+
+namespace gpdr::parallel::testing {
+
+using refine::testing::cdt;
+using refine::testing::examine;
+using refine::testing::joined;
+using refine::testing::point_set_mesh;
+using refine::testing::random_points;
+
+namespace {
+
+refine::RefineSettings settings_for(double angle, double area) {
+    refine::RefineSettings s;
+    s.criteria.min_angle_degrees = angle;
+    s.criteria.max_area = area;
+    s.checked = true;
+    return s;
+}
+
+// A square with a square hole and an acute notch (small input angle).
+triangulate::Pslg notched_square() {
+    triangulate::Pslg p;
+    p.points = {{0, 0}, {4, 0}, {4, 4}, {2.2, 4}, {2, 1.5}, {1.8, 4}, {0, 4},
+                {1, 2.5}, {1.5, 2.5}, {1.5, 3}, {1, 3}};
+    p.segments = {0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 0, 7, 8, 8, 9, 9, 10, 10, 7};
+    p.holes = {{1.25, 2.75}};
+    return p;
+}
+
+// A random PSLG: a polygon with jittered vertices around a circle plus
+// random interior points.
+triangulate::Pslg random_pslg(std::uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    triangulate::Pslg p;
+    const int n = 5 + static_cast<int>(rng() % 12);
+    for (int i = 0; i < n; ++i) {
+        const double a = 2 * 3.141592653589793 * (i + 0.8 * u(rng)) / n;
+        const double r = 0.5 + 0.5 * u(rng);
+        p.points.push_back({r * std::cos(a), r * std::sin(a)});
+        p.segments.push_back(static_cast<std::uint32_t>(i));
+        p.segments.push_back(static_cast<std::uint32_t>((i + 1) % n));
+    }
+    for (int i = 0; i < 10; ++i) p.points.push_back({0.4 * (u(rng) - 0.5), 0.4 * (u(rng) - 0.5)});
+    return p;
+}
+
+struct Result {
+    std::size_t triangles = 0;
+    std::size_t vertices = 0;
+};
+
+Result refine_checked(mesh::Mesh& m, const refine::RefineSettings& s, unsigned threads, unsigned g, bool checked,
+                      ParallelReport* out = nullptr) {
+    ParallelOptions o;
+    o.threads = threads;
+    o.granularity = g;
+    o.checked = checked;
+    o.split_work = 64;  // small meshes: split early, so that leaves run concurrently
+    ParallelReport report;
+    refine_parallel(m, s, o, report);
+    INFO("threads " << threads << " g " << g << "\n" << joined(report.problems));
+    CHECK(report.problems.empty());
+    CHECK(report.refine.left_other == 0);
+    CHECK(report.refine.stopped == refine::RefineReport::Stop::none);
+    const auto outcome = examine(m, s);
+    CHECK(outcome.bad_angles == 0);
+    CHECK(outcome.too_big == 0);
+    if (out) *out = std::move(report);
+    return {outcome.triangles, report.refine.steiner_points};
+}
+
+}  // namespace
+
+TEST_CASE("parallel refinement of a point set matches -j1's bounds and size", "[parallel]") {
+    const auto points = random_points(300, 7);
+    const auto s = settings_for(25, 2e-4);
+    mesh::Mesh sequential = point_set_mesh(points);
+    refine::RefineReport sr;
+    refine::refine_mesh(sequential, s, sr);
+    const double reference = double(sequential.count_triangles());
+
+    for (unsigned threads : {1u, 2u, 3u, 4u}) {
+        for (unsigned g : {1u, 2u, 4u}) {
+            mesh::Mesh m = point_set_mesh(points);
+            ParallelReport report;
+            const Result r = refine_checked(m, s, threads, g, true, &report);
+            INFO("threads " << threads << " g " << g << ": " << r.triangles << " triangles vs " << reference);
+            CHECK(std::abs(double(r.triangles) - reference) < 0.05 * reference);
+            CHECK(report.checks > 0);
+            CHECK(report.splits > 0);
+            CHECK(report.leaves > 1);
+            if (threads > 1) CHECK(report.workers.size() == threads);
+        }
+    }
+}
+
+TEST_CASE("parallel refinement of a PSLG with a hole and a small angle", "[parallel]") {
+    const auto p = notched_square();
+    auto s = settings_for(28, 1e-3);
+    mesh::Mesh sequential = cdt(p);
+    refine::RefineReport sr;
+    refine::refine_mesh(sequential, s, sr);
+    const double reference = double(sequential.count_triangles());
+    for (unsigned threads : {1u, 2u, 4u}) {
+        mesh::Mesh m = cdt(p);
+        ParallelReport report;
+        const Result r = refine_checked(m, s, threads, 2, true, &report);
+        CHECK(std::abs(double(r.triangles) - reference) < 0.05 * reference);
+        // Concurrency really happened on more than one thread.
+        if (threads > 1) CHECK(report.most_concurrent > 1);
+    }
+}
+
+TEST_CASE("the Steiner limit stops every worker with a valid mesh", "[parallel]") {
+    mesh::Mesh m = point_set_mesh(random_points(200, 3));
+    auto s = settings_for(30, 1e-4);
+    s.steiner_limit = true;
+    s.max_steiner = 500;
+    ParallelOptions o;
+    o.threads = 3;
+    o.split_work = 32;
+    ParallelReport report;
+    refine_parallel(m, s, o, report);
+    CHECK(report.refine.stopped == refine::RefineReport::Stop::steiner_limit);
+    // Workers stop at their next check of the shared count: a few over at most.
+    CHECK(report.refine.steiner_points >= 500);
+    CHECK(report.refine.steiner_points < 500 + 64);
+    const auto problems = mesh::check_mesh(m);
+    INFO(joined(problems));
+    CHECK(problems.empty());
+}
+
+TEST_CASE("timing report has one entry per worker and the API defaults", "[parallel]") {
+    mesh::Mesh m = point_set_mesh(random_points(100, 11));
+    ParallelReport report;
+    refine_parallel(m, settings_for(20, 1e-3), 2, 0, report);
+    CHECK(report.threads == 2);
+    CHECK(report.granularity == default_granularity);
+    REQUIRE(report.workers.size() == 2);
+    CHECK(report.workers[0].refining + report.workers[1].refining > 0);
+    CHECK(report.assignments > 0);
+}
+
+TEST_CASE("stress: random point sets and PSLGs, -j2..-j8, -g1..-g4", "[parallel][stress]") {
+    std::mt19937 rng(2024);
+    int runs = 0;
+    for (int i = 0; i < 240; ++i) {
+        const unsigned threads = 2 + rng() % 7;
+        const unsigned g = 1 + rng() % 4;
+        const double angle = 20 + (rng() % 14);
+        const bool pslg = i % 2 == 1;
+        mesh::Mesh m = pslg ? cdt(random_pslg(static_cast<std::uint32_t>(i)))
+                            : point_set_mesh(random_points(20 + rng() % 150, static_cast<std::uint32_t>(i)));
+        const double area = pslg ? 2e-3 + 1e-3 * (rng() % 5) : 1e-3 + 1e-3 * (rng() % 3);
+        if (const char* only = std::getenv("GPDR_STRESS_ONLY"); only && std::atoi(only) != i) continue;
+        INFO("run " << i << (pslg ? " pslg" : " points") << " -j" << threads << " -g" << g << " -q" << angle);
+        // The quadtree verification after every leaf on one run in four.
+        const char* jt = std::getenv("GPDR_STRESS_THREADS");
+        refine_checked(m, settings_for(angle, area), jt ? unsigned(std::atoi(jt)) : threads, g, i % 4 == 0);
+        ++runs;
+    }
+    if (!std::getenv("GPDR_STRESS_ONLY")) CHECK(runs == 240);
+}
+
+}  // namespace gpdr::parallel::testing

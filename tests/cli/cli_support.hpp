@@ -68,12 +68,12 @@ struct RunResult {
     std::string err;
 };
 
-// Runs `gpdr <args>` with `dir` as the working folder.  `args` is passed to
-// the shell as written, so quote names with blanks.
-inline RunResult run_gpdr(const TempDir& dir, const std::string& args) {
+// Runs `program <args>` with `dir` as the working folder.  `args` is passed
+// to the shell as written, so quote names with blanks.
+inline RunResult run_program(const TempDir& dir, const fs::path& program, const std::string& args) {
     const auto out = dir / ".stdout";
     const auto err = dir / ".stderr";
-    const std::string command = "cd '" + dir.path().string() + "' && '" GPDR_EXE "' " + args +
+    const std::string command = "cd '" + dir.path().string() + "' && '" + program.string() + "' " + args +
                                 " >'" + out.string() + "' 2>'" + err.string() + "' </dev/null";
     const int raw = std::system(command.c_str());
     RunResult r;
@@ -84,6 +84,9 @@ inline RunResult run_gpdr(const TempDir& dir, const std::string& args) {
     fs::remove(err);
     return r;
 }
+
+// Runs the built gpdr.
+inline RunResult run_gpdr(const TempDir& dir, const std::string& args) { return run_program(dir, GPDR_EXE, args); }
 
 inline fs::path source_dir() { return GPDR_SOURCE_DIR; }
 inline fs::path project_samples() { return source_dir() / "poly-samples"; }

@@ -25,23 +25,6 @@ namespace {
 // The c that apps/CMakeLists.txt compiles into gpdr_graded (-DGRADING_C).
 constexpr double linked_c = 0.3;
 
-// Runs `program args` in `dir`, as run_gpdr() does for gpdr.
-RunResult run_program(const TempDir& dir, const fs::path& program, const std::string& args) {
-    const auto out = dir / ".stdout";
-    const auto err = dir / ".stderr";
-    const std::string command = "cd '" + dir.path().string() + "' && '" + program.string() + "' " +
-                                args + " >'" + out.string() + "' 2>'" + err.string() +
-                                "' </dev/null";
-    const int raw = std::system(command.c_str());
-    RunResult r;
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = TempDir::slurp(out);
-    r.err = TempDir::slurp(err);
-    fs::remove(out);
-    fs::remove(err);
-    return r;
-}
-
 bool have_c_compiler() { return std::system("command -v cc >/dev/null 2>&1") == 0; }
 
 // Compiles C `source` into the shared object `name` in `dir`.

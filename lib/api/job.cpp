@@ -79,7 +79,6 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
 
     // Read (every input is checked before anything else happens).
     api::Input input = api::read_input(options, names, warn);
-    api::refuse_unimplemented(options);
     result.input_vertices = input.nodes.data.size();
     result.read_seconds = clock.lap();
 
@@ -90,6 +89,7 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
     // Refine.
     const bool refining = api::wants_refinement(options);
     refine::RefineReport refined;
+    std::vector<std::string> parallel_lines;
     if (refining) {
         refine::RefineSettings settings = api::refine_settings(options, plugins, input.poly ? &*input.poly : nullptr);
         settings.criteria.triangle_max_area = tri.area_bounds.get();
@@ -101,7 +101,7 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
         if (settings.steiner_limit)
             settings.max_steiner = settings.max_steiner > tri.steiner_points ? settings.max_steiner - tri.steiner_points : 0;
         api::warn_before_refinement(options, warn);
-        refine::refine_mesh(tri.mesh, settings, refined);
+        parallel_lines = api::refine(tri.mesh, settings, options, refined);
         api::warn_after_refinement(refined, warn);
         tri.new_vertices.insert(tri.new_vertices.end(), refined.new_vertices.begin(), refined.new_vertices.end());
         refined.new_vertices = {};
@@ -152,6 +152,7 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
     result.write_seconds += clock.lap();
 
     result.statistics = summary_lines(result, options, refining, refined, tri.steiner_points);
+    result.statistics.insert(result.statistics.end(), parallel_lines.begin(), parallel_lines.end());
     if (!quality.empty()) {
         result.statistics.emplace_back();
         result.statistics.insert(result.statistics.end(), quality.begin(), quality.end());

@@ -1,6 +1,6 @@
 #pragma once
-// The stages of one gpdr run (job.cpp strings them together): refuse what is
-// not implemented yet, turn the finished mesh into arrays, write the files.
+// The stages of one gpdr run (job.cpp strings them together): read,
+// triangulate, refine, turn the finished mesh into arrays, write the files.
 
 #include <memory>
 #include <optional>
@@ -60,15 +60,15 @@ struct Triangulated {
 };
 Triangulated triangulate_input(const Options& options, Input& input, const WarningSink& warn);
 
-// Throws NotImplemented, naming the switch, for every feature a later version
-// delivers, so that no switch is ever silently ignored.
-void refuse_unimplemented(const Options& options);
-
 // Refinement: whether the switches ask for it, its settings (throws
 // UsageError for -u with no function), and warnings before and after.
 bool wants_refinement(const Options& options);
 refine::RefineSettings refine_settings(const Options& options, const JobPlugins& plugins, const PolyFile* poly);
 void warn_before_refinement(const Options& options, const WarningSink& warn);
+// Refines on one thread (-j1, or -S, whose limit is exact only there) or in
+// parallel; returns the -V lines on the threads' time (none for one thread).
+std::vector<std::string> refine(mesh::Mesh& mesh, const refine::RefineSettings& settings, const Options& options,
+                                refine::RefineReport& report);
 void warn_after_refinement(const refine::RefineReport& report, const WarningSink& warn);
 
 // The finished mesh as arrays.  `nodes` are the input vertices (ids 0..n-1 of

@@ -8,6 +8,7 @@
 #include <gpdr/errors.hpp>
 
 #include "api/job_stages.hpp"
+#include "parallel/refine_parallel.hpp"
 #include "refine/refine.hpp"
 
 namespace gpdr::api {
@@ -50,6 +51,35 @@ void warn_before_refinement(const Options& o, const WarningSink& warn) {
                      fmt::format("a minimum angle of {} degrees may be out of reach (Triangle's refinement "
                                  "usually works up to about 33); gpdr stops with a valid mesh if it is",
                                  o.min_angle)});
+}
+
+std::vector<std::string> refine(mesh::Mesh& mesh, const refine::RefineSettings& settings, const Options& o,
+                                refine::RefineReport& report) {
+    parallel::ParallelOptions p;
+    p.threads = o.threads;
+    p.granularity = o.granularity;
+    // One thread runs the sequential refiner (one leaf, no quadtree): the
+    // same refinement without the cost of sharing it.  So does -S, whose
+    // limit is exact only on one thread.
+    p.one_leaf_for_one_thread = true;
+    if (o.steiner_limit) p.threads = 1;
+    parallel::ParallelReport r;
+    parallel::refine_parallel(mesh, settings, p, r);
+    report = std::move(r.refine);
+    std::vector<std::string> lines;
+    if (r.threads <= 1) return lines;
+    // The GPDR paper's Fig. 5 (right): where each thread's time went.
+    const auto line = [](const char* who, unsigned i, const parallel::ThreadTimes& t) {
+        return fmt::format("  {}{}: refining {:.0f} ms, managing {:.0f} ms, waiting {:.0f} ms", who, i,
+                           t.refining * 1000, t.managing * 1000, t.waiting * 1000);
+    };
+    lines.emplace_back();
+    lines.push_back(fmt::format("Parallel refinement: {} worker threads, granularity {}, {} leaves, {} assignments",
+                                r.threads, r.granularity, r.leaves, r.assignments));
+    lines.push_back(fmt::format("  master: managing {:.0f} ms, waiting {:.0f} ms", r.master.managing * 1000,
+                                r.master.waiting * 1000));
+    for (std::size_t w = 0; w < r.workers.size(); ++w) lines.push_back(line("worker ", unsigned(w + 1), r.workers[w]));
+    return lines;
 }
 
 void warn_after_refinement(const refine::RefineReport& r, const WarningSink& warn) {

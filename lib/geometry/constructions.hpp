@@ -51,17 +51,22 @@ inline double squared_distance(const Point& p, const Point& q) {
 
 // The circumcentre relative to a: with B = b - a and C = c - a it is
 // (C_y |B|^2 - B_y |C|^2, B_x |C|^2 - C_x |B|^2) / (2 B x C).
-inline Circle circumcircle(const Point& a, const Point& b, const Point& c) {
+// `orientation` is orient2d(a, b, c), for callers that have it already.
+inline Circle circumcircle(const Point& a, const Point& b, const Point& c, double orientation) {
     const double bx = b.x - a.x;
     const double by = b.y - a.y;
     const double cx = c.x - a.x;
     const double cy = c.y - a.y;
     const double b2 = bx * bx + by * by;
     const double c2 = cx * cx + cy * cy;
-    const double denominator = 2.0 * orient2d(a, b, c);
+    const double denominator = 2.0 * orientation;
     const double ux = (cy * b2 - by * c2) / denominator;
     const double uy = (bx * c2 - cx * b2) / denominator;
     return {{a.x + ux, a.y + uy}, ux * ux + uy * uy};
+}
+
+inline Circle circumcircle(const Point& a, const Point& b, const Point& c) {
+    return circumcircle(a, b, c, orient2d(a, b, c));
 }
 
 inline Point circumcentre(const Point& a, const Point& b, const Point& c) {

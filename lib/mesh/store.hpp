@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <memory>
 #include <new>
 
@@ -56,11 +57,19 @@ public:
 
     // Makes sure chunk c exists (zero-filled).  Returns false when c is past
     // the reserved table.  Throws std::bad_alloc when memory runs out.
-    bool ensure(std::uint32_t c) {
+    //
+    // `write_now`: write the zeros at once.  For a table that is read
+    // before it is written (a slot's old record), a calloc page first read
+    // maps the shared zero page, and the first write then copies it and
+    // flushes the TLB of every core running the process: one interrupt per
+    // page on each of them while threads work.  Writing the chunk when it
+    // is made faults each page in once, privately.
+    bool ensure(std::uint32_t c, bool write_now = false) {
         if (c >= MaxChunks) return false;
         if (chunks_[c].load(std::memory_order_acquire) != nullptr) return true;
         T* fresh = static_cast<T*>(std::calloc(chunk_size, sizeof(T)));
         if (fresh == nullptr) throw std::bad_alloc();
+        if (write_now) std::memset(static_cast<void*>(fresh), 0, std::size_t{chunk_size} * sizeof(T));
         T* expected = nullptr;
         if (chunks_[c].compare_exchange_strong(expected, fresh, std::memory_order_acq_rel))
             allocated_.fetch_add(1, std::memory_order_relaxed);

@@ -10,14 +10,15 @@
 
 namespace gpdr::parallel {
 
-double distance(const Square& a, const Square& b) {
+double squared_distance(const Square& a, const Square& b) {
     const double gx = std::max({0.0, a.x0 - (b.x0 + b.side), b.x0 - (a.x0 + a.side)});
     const double gy = std::max({0.0, a.y0 - (b.y0 + b.side), b.y0 - (a.y0 + a.side)});
-    return std::hypot(gx, gy);
+    return gx * gx + gy * gy;
 }
 
 
-Quadtree::Quadtree(double x0, double y0, double side) : x0_(x0), y0_(y0), side_(side) {
+Quadtree::Quadtree(double x0, double y0, double side)
+    : x0_(x0), y0_(y0), side_(side), shrunk_side_squared_over_16_(side * side / 16 * (1 - 0x1p-30)) {
     for (int k = 0; k <= max_level + 1; ++k) {
         sides_[k] = std::ldexp(side, -k);
         inverse_sides_[k] = 1.0 / sides_[k];
@@ -110,7 +111,8 @@ void Quadtree::zone_search(NodeId id, const Square& target, double target_side, 
     const NodeKind k = n.get_kind();
     // Every leaf below has ℓe <= max(ℓ(n), above): prune when even that is too far.
     const double bound = std::max(s.side, above);
-    if (distance(target, s) >= 0.5 * (target_side + bound)) return;
+    const double reach = 0.5 * (target_side + bound);
+    if (squared_distance(target, s) >= reach * reach) return;
     if (k != NodeKind::internal) {
         out.push_back(id);
         return;

@@ -34,6 +34,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -75,8 +76,9 @@ struct Square {
     bool contains(const Point& p) const { return p.x >= x0 && p.x < x0 + side && p.y >= y0 && p.y < y0 + side; }
 };
 
-// Euclidean distance between two squares (0 when they touch or overlap).
-double distance(const Square& a, const Square& b);
+// The squared Euclidean distance between two squares (0 when they touch or
+// overlap).
+double squared_distance(const Square& a, const Square& b);
 // Whether the closed disk (centre c, radius r) meets the square.
 inline bool disk_meets(const Square& s, const Point& c, double r) {
     const double dx = std::max({0.0, s.x0 - c.x, c.x - (s.x0 + s.side)});
@@ -107,29 +109,27 @@ public:
     static constexpr NodeId root() { return 0; }
     std::uint32_t node_end() const { return next_.load(std::memory_order_acquire); }
 
-    // Cell coordinate of x at `level`, clamped into the root.
-    std::uint32_t cell_x(double x, int level) const {
-    const double f = std::floor((x - x0_) * inverse_sides_[level]);
-    const double top = double((std::uint32_t{1} << level) - 1);
-    return static_cast<std::uint32_t>(std::clamp(f, 0.0, top));
-}
-    std::uint32_t cell_y(double y, int level) const {
-    const double f = std::floor((y - y0_) * inverse_sides_[level]);
-    const double top = double((std::uint32_t{1} << level) - 1);
-    return static_cast<std::uint32_t>(std::clamp(f, 0.0, top));
-}
-    // The level a triangle of circumradius r is counted at (see above), -1
-    // when r >= ℓ_root / 4, or max_level + 1 when it is too small to matter.
-    int level_of_radius(double r) const {
-    if (!(r > 0) || !std::isfinite(r)) return max_level + 1;
-    const double x = side_ / (4.0 * r);
-    if (!(x > 1.0)) return -1;
-    int k = std::ilogb(x);
-    if (k > max_level) return max_level + 1;
-    if (!(side_at(k) > 4.0 * r)) --k;  // ℓ_k must exceed 4r strictly
-    if (k < 0) return -1;
-    return std::min(k, max_level + 1);
-}
+    // Cell coordinate of x at `level`, clamped into the root.  (The hot
+    // path of the counters: a truncation, no library call.)
+    std::uint32_t cell_x(double x, int level) const { return cell_coordinate((x - x0_) * inverse_sides_[level], level); }
+    std::uint32_t cell_y(double y, int level) const { return cell_coordinate((y - y0_) * inverse_sides_[level], level); }
+    // The level a triangle of circumradius r = sqrt(radius_squared) is
+    // counted at (see above): k = ⌊log2(ℓ_root / 4r)⌋, read off the exponent
+    // of ℓ_root² / 16r² (halved), that quotient shrunk by 2^-30 first so that
+    // rounding never breaks ℓ_k > 4r (it may give the level above, whose
+    // cells are larger: only ever conservative).  -1 when r >= ℓ_root / 4 (up
+    // to that margin), max_level + 1 when the triangle is too small to matter
+    // (or r is not a positive number).
+    int level_of(double radius_squared) const {
+        if (!(radius_squared > 0)) return max_level + 1;
+        const double q = shrunk_side_squared_over_16_ / radius_squared;
+        if (!(q > 1.0)) return -1;
+        if (!(q < 0x1p+60)) return max_level + 1;  // deeper than max_level (or infinite)
+        // q is normal and in (1, 2^60): floor(log2 q) is its biased exponent - 1023.
+        const int e = static_cast<int>((std::bit_cast<std::uint64_t>(q) >> 52) & 0x7FF) - 1023;
+        const int k = e >> 1;  // 4^k <= q < true ℓ²/16r², so ℓ_k > 4r
+        return k > max_level ? max_level + 1 : k;
+    }
 
     // The node of cell (level, ix, iy), descending from `from` (an
     // ancestor-or-self of it).  Missing shadow nodes below leaves are made
@@ -150,10 +150,16 @@ public:
     void leaves(std::vector<NodeId>& out) const;
 
 private:
+    static std::uint32_t cell_coordinate(double f, int level) {
+        const double top = double((std::uint32_t{1} << level) - 1);
+        // std::max(0.0, NaN) is 0.0: a coordinate that is not a number lands in cell 0.
+        return static_cast<std::uint32_t>(static_cast<std::int64_t>(std::min(std::max(0.0, f), top)));
+    }
     NodeId allocate(NodeAllocator& alloc);
     void zone_search(NodeId n, const Square& target, double target_side, double above, std::vector<NodeId>& out) const;
 
     double x0_, y0_, side_;
+    double shrunk_side_squared_over_16_;  // ℓ_root² / 16 (1 - 2^-30)
     double sides_[max_level + 2];      // ℓ_k
     double inverse_sides_[max_level + 2];  // 1 / ℓ_k
     mutable mesh::ChunkTable<Node, 12, (1u << 20)> nodes_;

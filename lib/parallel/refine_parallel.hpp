@@ -65,16 +65,12 @@ struct ParallelOptions {
     // until no worker is busy first), and buffer-zone exclusivity at every
     // assignment.  Failures go to ParallelReport::problems.  Slow: tests.
     bool checked = false;
-    // A leaf splits (when (9) allows) only if its last refinement created
-    // at least this many triangles: small, quiet leaves cost the master
-    // more than they give back.
-    std::uint64_t split_work = 1024;
     bool one_leaf_for_one_thread = false;
 };
 
 // Granularity when none is given: -g1 was fastest for -j2 in
 // tests/parallel/bench_test.cpp (2 cores; -g2..-g4 leave fewer, larger leaves).
-inline constexpr unsigned default_granularity = 1;
+inline constexpr unsigned default_granularity = 4;
 
 // Refines `mesh` (the input refine::refine_mesh takes) in parallel.  Throws
 // what refine_mesh throws; a worker's exception is rethrown on the calling

@@ -37,12 +37,15 @@ long Scheduler::key(NodeId leaf) const {
 }
 
 void Scheduler::offer(NodeId leaf) {
-    // Every change to a leaf's work is followed by an offer, so the queue
-    // may hold older entries of the same leaf: assign() skips an entry
-    // whose key is no longer the leaf's.
+    // Every change to a leaf's work is followed by an offer; the leaf is
+    // queued again only when its key changed (the older entry goes stale).
     Info& i = info(leaf);
     if (i.held || tree_.node(leaf).get_kind() != NodeKind::leaf || !has_work(leaf)) return;
-    queue_.push({key(leaf), leaf});
+    const long k = key(leaf);
+    if (i.queued && i.queued_key == k) return;
+    i.queued = true;
+    i.queued_key = k;
+    queue_.push({k, leaf});
 }
 
 void Scheduler::push_into(NodeId leaf, const Routed& r) {
@@ -87,12 +90,24 @@ NodeId Scheduler::assign(int w, unsigned busy) {
         const auto [k, x] = queue_.top();
         queue_.pop();
         Info& i = info(x);
-        if (tree_.node(x).get_kind() != NodeKind::leaf) continue;  // split since: its children were offered
+        if (!i.queued || i.queued_key != k) continue;  // stale: the leaf was queued again with another key
+        if (tree_.node(x).get_kind() != NodeKind::leaf) {
+            i.queued = false;  // split since: its children were offered
+            continue;
+        }
         if (i.held) {
             blocked.push_back({k, x});  // (its work cannot be read now)
             continue;
         }
-        if (!has_work(x) || key(x) != k) continue;  // an older entry: the leaf was offered again
+        if (!has_work(x)) {
+            i.queued = false;
+            continue;
+        }
+        if (key(x) != k) {  // (cannot happen: every change is offered; kept cheap and safe)
+            i.queued_key = key(x);
+            blocked.push_back({i.queued_key, x});
+            continue;
+        }
         tree_.zone(x, zone_scratch_);
         const bool free = std::none_of(zone_scratch_.begin(), zone_scratch_.end(),
                                        [&](NodeId z) { return info(z).held; });
@@ -118,6 +133,7 @@ NodeId Scheduler::assign(int w, unsigned busy) {
                         chosen, a.leaf, z));
         }
     }
+    info(chosen).queued = false;
     Active& a = active_[w];
     a.leaf = chosen;
     a.zone = zone_scratch_;

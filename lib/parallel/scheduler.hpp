@@ -69,6 +69,11 @@ public:
 private:
     struct Info {
         bool held = false;
+        // Whether the queue holds an entry for the leaf, and with which key
+        // (entries with another key are stale and dropped when popped): a
+        // leaf is queued once however often it is offered.
+        bool queued = false;
+        long queued_key = 0;
         std::vector<Routed> inbox;
     };
     struct Active {

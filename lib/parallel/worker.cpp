@@ -25,8 +25,7 @@ bool finite(const Point& p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 }  // namespace
 
 CellRecord cell_record(const Quadtree& tree, const Point& centre, double radius_squared, bool& outgrew_root) {
-    const double r = std::sqrt(radius_squared);
-    int k = tree.level_of_radius(r);
+    const int k = tree.level_of(radius_squared);
     if (k > max_level) return 0;  // too small to matter for any leaf we may make
     if (k < 0) {
         // Larger than the root allows (cannot happen while relation (9)
@@ -34,15 +33,25 @@ CellRecord cell_record(const Quadtree& tree, const Point& centre, double radius_
         outgrew_root = true;
         return (std::uint64_t{1} << 63) | (std::uint64_t{1} << 52);
     }
+    // The disk's diameter is below ℓ_k / 2, so its bounding box spans at
+    // most 2 x 2 cells.  A cell beside the centre's (same row or column) is
+    // met by the disk whenever the box reaches it; only the diagonal cell of
+    // a 2 x 2 box needs the real test.
+    const double r = std::sqrt(radius_squared);
     const std::uint32_t x_lo = tree.cell_x(centre.x - r, k), x_hi = tree.cell_x(centre.x + r, k);
     const std::uint32_t y_lo = tree.cell_y(centre.y - r, k), y_hi = tree.cell_y(centre.y + r, k);
-    std::uint64_t mask = 0;
-    for (std::uint32_t dy = 0; dy < 2; ++dy)
-        for (std::uint32_t dx = 0; dx < 2; ++dx) {
-            if (x_lo + dx > x_hi || y_lo + dy > y_hi) continue;
-            if (disk_meets(tree.cell_square(k, x_lo + dx, y_lo + dy), centre, r)) mask |= 1u << (dx + 2 * dy);
-        }
-    if (mask == 0) mask = 1;  // a disk (nearly) outside the root: count it in the nearest cell
+    std::uint64_t mask = 1;
+    if (x_hi != x_lo) mask |= 2;
+    if (y_hi != y_lo) mask |= 4;
+    if (mask == 7) {
+        // Which corner of the box holds the centre decides the diagonal cell.
+        const std::uint32_t cx = tree.cell_x(centre.x, k), cy = tree.cell_y(centre.y, k);
+        const unsigned centre_bit = (cx != x_lo ? 1u : 0u) | (cy != y_lo ? 2u : 0u);
+        const unsigned diagonal = 3u - centre_bit;
+        mask = 15u & ~(1u << diagonal);
+        if (disk_meets(tree.cell_square(k, x_lo + (diagonal & 1u), y_lo + (diagonal >> 1)), centre, r))
+            mask |= 1u << diagonal;
+    }
     return (std::uint64_t{1} << 63) | (std::uint64_t(k) << 56) | (mask << 52) | (std::uint64_t(x_lo) << 26) |
            std::uint64_t(y_lo);
 }
@@ -119,13 +128,10 @@ void Worker::apply(CellRecord record, int delta, bool check_zone) {
     }
 }
 
-void Worker::count(mesh::TriangleId t) {
-    const mesh::Triangle& r = mesh_.triangle(t);
-    const geometry::Circle c =
-        geometry::circumcircle(mesh_.point(r.v[0]), mesh_.point(r.v[1]), mesh_.point(r.v[2]));
+void Worker::count(mesh::TriangleId t, const geometry::Circle& c) {
     const CellRecord record = cell_record(tree_, c.centre, c.radius_squared, outgrew_root);
     const std::uint32_t i = mesh::index(t);
-    records_.ensure(i >> 16);
+    records_.ensure(i >> 16, true);  // (read before written: see ChunkTable::ensure)
     records_[i] = record;
     if (record != 0) apply(record, +1, current_ != no_node);
 }
@@ -140,18 +146,21 @@ void Worker::uncount(mesh::TriangleId t) {
 }
 
 void Worker::count_all() {
-    mesh::for_each_triangle(mesh_, [&](mesh::TriangleId id, const mesh::Triangle&) { count(id); });
+    mesh::for_each_triangle(mesh_, [&](mesh::TriangleId id, const mesh::Triangle& r) {
+        count(id, geometry::circumcircle(mesh_.point(r.v[0]), mesh_.point(r.v[1]), mesh_.point(r.v[2])));
+    });
 }
 
-void Worker::mesh_changed(std::span<const mesh::TriangleId> killed, std::span<const mesh::TriangleId> created) {
-    // Killed first: their slots may be reused in `created`.  Then each
-    // created triangle drops whatever its slot still counted (a triangle a
-    // flip changed in place) and is counted afresh.
+// Killed first: their slots may be reused by the created triangles that
+// follow.  A created triangle drops whatever its slot still counted (a
+// triangle a flip changed in place) and is counted afresh.
+void Worker::triangles_killed(std::span<const mesh::TriangleId> killed) {
     for (mesh::TriangleId t : killed) uncount(t);
-    for (mesh::TriangleId t : created) {
-        uncount(t);
-        count(t);
-    }
+}
+
+void Worker::triangle_created(mesh::TriangleId t, const geometry::Circle& circumcircle) {
+    uncount(t);
+    count(t, circumcircle);
 }
 
 // ---- routing ---------------------------------------------------------------------
@@ -239,14 +248,40 @@ bool Worker::split(NodeId leaf) {
     return true;
 }
 
+// Whether the leaf should split now, before refining further: relation (9)
+// holds for its children (its own count is 0) and the work waiting in it is
+// for triangles small enough to be the children's (σ >= 2 + g: a leaf
+// refines triangles down to r ~ ℓ/2^(2+g) itself, so that larger g makes
+// fewer, longer runs).  Splitting later would leave one worker refining a
+// large part of the mesh while the others wait for its buffer zone.
+bool Worker::should_split(const Node& n, LeafState& state) {
+    if (stopped || n.level >= max_level || n.count.load(std::memory_order_relaxed) != 0) return false;
+    const int lowest = state.work.lowest_level();
+    return lowest >= 2 + static_cast<int>(run_.settings().granularity) ||
+           (lowest < 0 && state.work.subsegment_entries() != 0);
+}
+
 bool Worker::run(NodeId leaf) {
     const auto t0 = Clock::now();
     current_ = leaf;
     Node& n = tree_.node(leaf);
     LeafState& state = *n.state;
-    const std::uint64_t created_before = report.triangles_created;
-    if (!refiner_.refine_leaf(state.work)) stopped = true;
-    const std::uint64_t created = report.triangles_created - created_before;
+    // Fig. 4, one σ level at a time (levels i_min .. i_min + g at most), so
+    // that the leaf splits as soon as its work belongs to its children.
+    const int granularity = static_cast<int>(run_.settings().granularity);
+    bool split_now = false;
+    for (int level = 0;; ++level) {
+        if (should_split(n, state)) {
+            split_now = true;
+            break;
+        }
+        const int lowest = state.work.lowest_level();
+        if (level > granularity || state.work.idle()) break;
+        if (!refiner_.refine_levels(state.work, lowest)) {
+            stopped = true;
+            break;
+        }
+    }
     const auto t1 = Clock::now();
     times.refining += std::chrono::duration<double>(t1 - t0).count();
 
@@ -256,11 +291,7 @@ bool Worker::run(NodeId leaf) {
     std::vector<refine::QueuedSubsegment> subsegments;
     subsegments.swap(state.work.handed_off_subsegments);
     for (const auto& s : subsegments) route_subsegment(s, no_node);
-
-    bool split_now = false;
-    if (!stopped && created >= options_.split_work && n.level < max_level &&
-        n.count.load(std::memory_order_relaxed) == 0)
-        split_now = split(leaf);
+    if (split_now) split(leaf);
     current_ = no_node;
     times.managing += seconds_since(t1);
     return split_now;

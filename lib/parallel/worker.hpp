@@ -76,7 +76,8 @@ public:
     // (line 13).  Returns whether the leaf split.
     bool run(NodeId leaf);
 
-    void mesh_changed(std::span<const mesh::TriangleId> killed, std::span<const mesh::TriangleId> created) override;
+    void triangles_killed(std::span<const mesh::TriangleId> killed) override;
+    void triangle_created(mesh::TriangleId t, const geometry::Circle& circumcircle) override;
 
     LeafState* new_leaf_state(NodeId leaf);
 
@@ -93,7 +94,7 @@ public:
     int id() const { return id_; }
 
 private:
-    void count(mesh::TriangleId t);
+    void count(mesh::TriangleId t, const geometry::Circle& circumcircle);
     void uncount(mesh::TriangleId t);
     void apply(CellRecord record, int delta, bool check_zone);
     // Where the work item should go: a leaf of this worker's zone (pushed
@@ -102,6 +103,7 @@ private:
                         NodeId splitting);
     void route_subsegment(refine::QueuedSubsegment s, NodeId splitting);
     void deliver(const Routed& r, NodeId splitting);
+    bool should_split(const Node& n, LeafState& state);
     bool split(NodeId leaf);
 
     int id_;

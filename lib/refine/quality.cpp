@@ -34,7 +34,8 @@ QualityTest::QualityTest(const QualityCriteria& criteria, SegmentEnds segments)
 }
 
 TriangleMeasures QualityTest::measure(const Point& a, const Point& b, const Point& c) {
-    return {geometry::circumcircle(a, b, c), geometry::shortest_edge(a, b, c), geometry::signed_area(a, b, c)};
+    const double orientation = geometry::orient2d(a, b, c);  // once: the circle and the area share it
+    return {geometry::circumcircle(a, b, c, orientation), geometry::shortest_edge(a, b, c), 0.5 * orientation};
 }
 
 Poorness QualityTest::assess(const mesh::Mesh& mesh, mesh::TriangleId t, const TriangleMeasures& m,

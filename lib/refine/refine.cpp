@@ -147,10 +147,14 @@ LeafRefiner::LeafRefiner(RefineRun& run, mesh::Pool& pool, RefineReport& report)
 
 void LeafRefiner::classify(Leaf& leaf, TriangleId t) {
     const mesh::Triangle& r = mesh_.triangle(t);
+    classify(leaf, t, QualityTest::measure(mesh_.point(r.v[0]), mesh_.point(r.v[1]), mesh_.point(r.v[2])));
+}
+
+void LeafRefiner::classify(Leaf& leaf, TriangleId t, const TriangleMeasures& m) {
+    const mesh::Triangle& r = mesh_.triangle(t);
     const Point& a = mesh_.point(r.v[0]);
     const Point& b = mesh_.point(r.v[1]);
     const Point& c = mesh_.point(r.v[2]);
-    const TriangleMeasures m = QualityTest::measure(a, b, c);
     if (quality_.assess(mesh_, t, m) != Poorness::good) {
         const QueuedTriangle q{t, r.generation};
         // Poor triangles are routed by their circumcentre; the Steiner point
@@ -175,8 +179,17 @@ void LeafRefiner::classify_all(Leaf& leaf) {
 
 void LeafRefiner::classify_created(Leaf& leaf) {
     report_.triangles_created += buffer_.created.size();
-    if (observer_ != nullptr) observer_->mesh_changed(buffer_.killed, buffer_.created);
-    for (TriangleId id : buffer_.created) classify(leaf, id);
+    if (observer_ == nullptr) {
+        for (TriangleId id : buffer_.created) classify(leaf, id);
+        return;
+    }
+    observer_->triangles_killed(buffer_.killed);
+    for (TriangleId id : buffer_.created) {
+        const mesh::Triangle& r = mesh_.triangle(id);
+        const TriangleMeasures m = QualityTest::measure(mesh_.point(r.v[0]), mesh_.point(r.v[1]), mesh_.point(r.v[2]));
+        observer_->triangle_created(id, m.circle);
+        classify(leaf, id, m);
+    }
 }
 
 bool LeafRefiner::may_split(EdgeRef e) const {
@@ -185,9 +198,25 @@ bool LeafRefiner::may_split(EdgeRef e) const {
     return true;
 }
 
+void LeafRefiner::count_steiner_point() {
+    // With -S every point is published at once (the limit is exact on one
+    // thread); otherwise in batches, so that threads do not fight over the
+    // counter's cache line for a safety limit that need not be exact.
+    if (settings_.steiner_limit) {
+        run_.steiner_used.fetch_add(1, std::memory_order_relaxed);
+        return;
+    }
+    if (++unpublished_steiner_ == 256) publish_steiner_points();
+}
+
+void LeafRefiner::publish_steiner_points() {
+    run_.steiner_used.fetch_add(unpublished_steiner_, std::memory_order_relaxed);
+    unpublished_steiner_ = 0;
+}
+
 bool LeafRefiner::budget_left() {
     if (report_.stopped != RefineReport::Stop::none) return false;
-    const std::uint64_t used = run_.steiner_used.load(std::memory_order_relaxed);
+    const std::uint64_t used = run_.steiner_used.load(std::memory_order_relaxed) + unpublished_steiner_;
     if (settings_.steiner_limit && used >= settings_.max_steiner) {
         report_.stopped = RefineReport::Stop::steiner_limit;
         return false;
@@ -204,7 +233,15 @@ bool LeafRefiner::refine_leaf(Leaf& leaf) {
     if (report_.stopped != RefineReport::Stop::none) return false;
     const int lowest = leaf.lowest_level();
     if (lowest < 0) return true;
-    const int last = std::min(lowest + static_cast<int>(settings_.granularity), Leaf::bucket_count - 1);
+    return refine_levels(leaf, lowest + static_cast<int>(settings_.granularity));
+}
+
+bool LeafRefiner::refine_levels(Leaf& leaf, int last_level) {
+    split_queued_subsegments(leaf);
+    if (report_.stopped != RefineReport::Stop::none) return false;
+    const int lowest = leaf.lowest_level();
+    if (lowest < 0) return true;
+    const int last = std::min(last_level, Leaf::bucket_count - 1);
     for (int j = lowest; j <= last; ++j) {
         QueuedTriangle q;
         while (leaf.pop_poor(j, q)) {
@@ -255,7 +292,7 @@ bool LeafRefiner::split_subsegment(Leaf& leaf, EdgeRef e) {
     } catch (const Error&) {
         return false;  // degenerate surroundings: the mesh is unchanged, leave the subsegment
     }
-    run_.steiner_used.fetch_add(1, std::memory_order_relaxed);
+    count_steiner_point();
     ++report_.steiner_points;
     ++report_.segment_splits;
     const Point pv = mesh_.point(result.vertex);
@@ -403,7 +440,7 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q) {
     if (result.status != mesh::InsertStatus::inserted)
         throw Error("refine: a located Steiner point was refused by insertion (vertex " +
                     std::to_string(mesh::index(v)) + ")");
-    run_.steiner_used.fetch_add(1, std::memory_order_relaxed);
+    count_steiner_point();
     ++report_.steiner_points;
     if (settings_.record_new_vertices) {
         NewVertex nv;

@@ -152,14 +152,16 @@ private:
     std::uint64_t safety_limit_ = 0;
 };
 
-// Told of every change refinement makes to the mesh, before the new
-// triangles are classified (the parallel layer keeps its quadtree counters
-// with it).  `killed` are the slots that died (some may already be reused in
-// `created`); `created` the new triangles, plus any a flip changed in place.
+// Told of every change refinement makes to the mesh (the parallel layer
+// keeps its quadtree counters with it).  For each insertion or split:
+// first the slots that died (some may already be reused by the triangles
+// that follow), then each new triangle, or one a flip changed in place,
+// with the circumcircle classification computes for it anyway.
 class MeshObserver {
 public:
     virtual ~MeshObserver() = default;
-    virtual void mesh_changed(std::span<const mesh::TriangleId> killed, std::span<const mesh::TriangleId> created) = 0;
+    virtual void triangles_killed(std::span<const mesh::TriangleId> killed) = 0;
+    virtual void triangle_created(mesh::TriangleId t, const geometry::Circle& circumcircle) = 0;
 };
 
 // One thread's refiner: owns the pool, insertion buffer and scratch.
@@ -170,12 +172,16 @@ public:
     // Assesses live triangle t and queues it in `leaf` if poor; queues its
     // encroached subsegments.
     void classify(Leaf& leaf, mesh::TriangleId t);
+    void classify(Leaf& leaf, mesh::TriangleId t, const TriangleMeasures& m);
     // classify() for every live triangle of the mesh (a fresh leaf that covers
     // the whole mesh).
     void classify_all(Leaf& leaf);
     // Fig. 4 of the paper on `leaf`: step 0, then levels i_min .. i_min + g.
     // Returns false when a limit stopped refinement (report().stopped).
     bool refine_leaf(Leaf& leaf);
+    // The same for levels i_min .. last_level (none when last_level < i_min,
+    // but step 0 always runs).
+    bool refine_levels(Leaf& leaf, int last_level);
     // Splits queued subsegments until none is left (step 0).
     void split_queued_subsegments(Leaf& leaf);
 
@@ -186,6 +192,9 @@ public:
         std::uint8_t reason;  // 0 no_split, 1 precision
     };
     const std::vector<GivenUp>& given_up() const { return given_up_; }
+    // Adds this refiner's Steiner points not yet counted in
+    // RefineRun::steiner_used (they are published in batches).
+    void publish_steiner_points();
     // Optional (nullptr: none); not owned.
     void set_observer(MeshObserver* observer) { observer_ = observer; }
 
@@ -194,6 +203,7 @@ private:
     bool split_subsegment(Leaf& leaf, mesh::EdgeRef e);
     bool may_split(mesh::EdgeRef e) const;
     bool budget_left();
+    void count_steiner_point();
     void classify_created(Leaf& leaf);
     void give_up(QueuedTriangle q, std::uint8_t reason) { given_up_.push_back({q.id, q.generation, reason}); }
 
@@ -208,6 +218,7 @@ private:
     std::vector<mesh::EdgeRef> blocking_;
     std::vector<GivenUp> given_up_;
     MeshObserver* observer_ = nullptr;
+    std::uint64_t unpublished_steiner_ = 0;
 };
 
 // The final pass of a run: counts the poor triangles left in `mesh` by

@@ -176,3 +176,36 @@ TEST_CASE("Triangle's classic samples mesh with -p, -c, -D, -O, -A, -q and pass 
 TEST_CASE("the project's samples mesh with -p, -c, -D, -O, -A, -q and pass -C", "[cli][samples]") {
     mesh_every_sample(project_samples());
 }
+
+TEST_CASE("switch -jN refines in parallel: the same bounds and about the same counts as -j1", "[cli][parallel]") {
+    // Area bounds that give 25,000 to 40,000 triangles, so that the quadtree
+    // splits and several leaves are refined at once.
+    const auto [sample, area] =
+        GENERATE(table<std::string, std::string>({{"flow.poly", "0.02"}, {"pipe.poly", "5"}}));
+    const std::string threads = GENERATE(as<std::string>{}, "-j2 -g1", "-j3 -g2", "-j4 -g4", "-j2");
+    TempDir dir;
+    dir.write(sample, sample_text(sample));
+    const std::string stem = sample.substr(0, sample.size() - 5) + ".1";
+    const std::string switches = "-pCVq30a" + area + " ";
+    require_checked(run_gpdr(dir, switches + "-j1 " + sample));
+    const std::size_t sequential = MeshFiles::read(dir, stem).triangles.size();
+    REQUIRE(sequential > 20000);
+
+    INFO(sample << " " << threads);
+    const auto r = run_gpdr(dir, switches + threads + " " + sample);
+    require_checked(r);
+    // -V says where each thread's time went (the paper's Fig. 5).
+    CHECK(r.out.find("master: managing") != std::string::npos);
+    CHECK(r.out.find("worker 2: refining") != std::string::npos);
+    const MeshFiles m = MeshFiles::read(dir, stem);
+    double smallest = 180, largest = 0;
+    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+        smallest = std::min(smallest, m.smallest_angle(t));
+        largest = std::max(largest, m.area(t));
+    }
+    CHECK(smallest >= 30 - 1e-9);
+    CHECK(largest <= std::stod(area));
+    const double ratio = double(m.triangles.size()) / double(sequential);
+    CHECK(ratio > 0.95);
+    CHECK(ratio < 1.05);
+}

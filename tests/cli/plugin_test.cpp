@@ -125,10 +125,6 @@ TEST_CASE("switch --unsuitable grades the pipe with the paper's function", "[cli
     SECTION("several threads call it at once") {
         const auto r2 = run_gpdr(dir, "-Q -pq20 -j2 --unsuitable ./grading.so pipe.poly");
         INFO("stderr: " << r2.err);
-        if (r2.status == 1 && r2.err.find("not implemented") != std::string::npos) {
-            WARN("parallel refinement is not in this version: -j2 is not tested");
-            return;
-        }
         REQUIRE(r2.status == 0);
         require_graded(measure(dir, "pipe.1", c), c);
     }

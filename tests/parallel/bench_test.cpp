@@ -7,6 +7,8 @@
 #include <catch2/catch.hpp>
 
 #include <chrono>
+#include <cstdlib>
+#include <iterator>
 
 #include "parallel/refine_parallel.hpp"
 #include "refine/refine_support.hpp"
@@ -29,25 +31,41 @@ TEST_CASE("parallel refinement speed on a large square", "[.bench][parallel]") {
         bool one_leaf;
     };
     const Case cases[] = {{"-j1 (one leaf)", 1, 2, true}, {"-j1 quadtree -g2", 1, 2, false},
-                          {"-j2 -g1", 2, 1, false},       {"-j2 -g2", 2, 2, false},
-                          {"-j2 -g3", 2, 3, false},       {"-j2 -g4", 2, 4, false}};
+                          {"-j1 quadtree -g4", 1, 4, false}, {"-j2 -g1", 2, 1, false},
+                          {"-j2 -g2", 2, 2, false},       {"-j2 -g3", 2, 3, false},
+                          {"-j2 -g4", 2, 4, false}};
     double base = 0;
-    for (const Case& c : cases) {
-        mesh::Mesh m = refine::testing::cdt(p);
-        ParallelOptions o;
-        o.threads = c.threads;
-        o.granularity = c.g;
-        o.one_leaf_for_one_thread = c.one_leaf;
+    const char* only = std::getenv("GPDR_BENCH_CASE");  // run one case (by its index) only
+    for (std::size_t ci = 0; ci < std::size(cases); ++ci) {
+        const Case& c = cases[ci];
+        if (only != nullptr && std::atoi(only) != int(ci)) continue;
+        // The best of three runs (the first touches fresh memory).
+        double sec = 1e300;
+        std::size_t triangles = 0;
         ParallelReport r;
-        const auto t0 = std::chrono::steady_clock::now();
-        refine_parallel(m, s, o, r);
-        const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        const int repeats = std::getenv("GPDR_BENCH_REPEAT") ? std::atoi(std::getenv("GPDR_BENCH_REPEAT")) : 3;
+        for (int repeat = 0; repeat < repeats; ++repeat) {
+            mesh::Mesh m = refine::testing::cdt(p);
+            ParallelOptions o;
+            o.threads = c.threads;
+            o.granularity = c.g;
+            o.one_leaf_for_one_thread = c.one_leaf;
+            ParallelReport run;
+            const auto t0 = std::chrono::steady_clock::now();
+            refine_parallel(m, s, o, run);
+            const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            if (t < sec) {
+                sec = t;
+                r = std::move(run);
+                triangles = m.count_triangles();
+            }
+        }
         if (base == 0) base = sec;
         std::string workers;
         for (const auto& w : r.workers)
             workers += " [refine " + std::to_string(w.refining) + " manage " + std::to_string(w.managing) + " wait " +
                        std::to_string(w.waiting) + "]";
-        WARN(c.name << ": " << m.count_triangles() << " triangles, " << sec << " s (" << sec / base
+        WARN(c.name << ": " << triangles << " triangles, " << sec << " s (" << sec / base
                     << " of -j1), leaves " << r.leaves << ", assignments " << r.assignments << ", most concurrent "
                     << r.most_concurrent << ", (9) exceptions " << r.relation9_exceptions << ", master [manage "
                     << r.master.managing << " wait " << r.master.waiting << "]" << workers);

@@ -72,7 +72,6 @@ Result refine_checked(mesh::Mesh& m, const refine::RefineSettings& s, unsigned t
     o.threads = threads;
     o.granularity = g;
     o.checked = checked;
-    o.split_work = 64;  // small meshes: split early, so that leaves run concurrently
     ParallelReport report;
     refine_parallel(m, s, o, report);
     INFO("threads " << threads << " g " << g << "\n" << joined(report.problems));
@@ -135,7 +134,6 @@ TEST_CASE("the Steiner limit stops every worker with a valid mesh", "[parallel]"
     s.max_steiner = 500;
     ParallelOptions o;
     o.threads = 3;
-    o.split_work = 32;
     ParallelReport report;
     refine_parallel(m, s, o, report);
     CHECK(report.refine.stopped == refine::RefineReport::Stop::steiner_limit);

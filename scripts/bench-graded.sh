@@ -5,6 +5,8 @@
 # c = 1e-4 (about 17 million triangles with the paper's model).
 #
 #   scripts/bench-graded.sh [THREADS ...]      gpdr with -j1, then each THREADS
+#                                              at each granularity of GRANULARITY
+#                                              (default "1 2 3 4")
 #   GRADING_C=1e-3 scripts/bench-graded.sh 2   a smaller run
 #   TRIANGLE_GRADED=/path/to/triangle-graded scripts/bench-graded.sh 2
 #
@@ -35,7 +37,13 @@ echo "Graded $(basename "$input"), -q20, c = $c"
 echo
 bench_header
 for n in "${threads[@]}"; do
-  bench_run "gpdr -j$n" "$GPDR" "pq20j$n${EXTRA:-}" "$input" --unsuitable "$lib"
+  if [ "$n" = 1 ]; then
+    bench_run "gpdr -j1" "$GPDR" "pq20j1${EXTRA:-}" "$input" --unsuitable "$lib"
+    continue
+  fi
+  for g in ${GRANULARITY:-1 2 3 4}; do
+    bench_run "gpdr -j$n -g$g" "$GPDR" "pq20j${n}g$g${EXTRA:-}" "$input" --unsuitable "$lib"
+  done
 done
 if [ -n "${TRIANGLE_GRADED:-}" ]; then
   bench_run "triangle (-DEXTERNAL_TEST)" "$TRIANGLE_GRADED" "pq20u${EXTRA:-}" "$input"

@@ -16,7 +16,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
-#include <cstring>
 #include <memory>
 #include <new>
 
@@ -69,7 +68,13 @@ public:
         if (chunks_[c].load(std::memory_order_acquire) != nullptr) return true;
         T* fresh = static_cast<T*>(std::calloc(chunk_size, sizeof(T)));
         if (fresh == nullptr) throw std::bad_alloc();
-        if (write_now) std::memset(static_cast<void*>(fresh), 0, std::size_t{chunk_size} * sizeof(T));
+        if (write_now) {
+            // One volatile store per page: the compiler may not drop it (it
+            // drops a memset of calloc'd memory, and turns malloc + memset
+            // into calloc).
+            volatile char* bytes = reinterpret_cast<volatile char*>(fresh);
+            for (std::size_t at = 0; at < std::size_t{chunk_size} * sizeof(T); at += 4096) bytes[at] = 0;
+        }
         T* expected = nullptr;
         if (chunks_[c].compare_exchange_strong(expected, fresh, std::memory_order_acq_rel))
             allocated_.fetch_add(1, std::memory_order_relaxed);

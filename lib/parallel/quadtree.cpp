@@ -46,7 +46,7 @@ NodeId Quadtree::allocate(NodeAllocator& alloc) {
         if (std::uint64_t{first} + block > (std::uint64_t{1} << 32) - 2) throw Error("parallel: quadtree too large");
         const std::uint32_t last = first + block - 1;
         for (std::uint32_t c = first >> 12; c <= last >> 12; ++c)
-            if (!nodes_.ensure(c)) throw Error("parallel: quadtree too large");
+            if (!nodes_.ensure(c, true)) throw Error("parallel: quadtree too large");
         alloc.next = first;
         alloc.end = first + block;
     }

@@ -68,8 +68,11 @@ struct ParallelOptions {
     bool one_leaf_for_one_thread = false;
 };
 
-// Granularity when none is given: -g1 was fastest for -j2 in
-// tests/parallel/bench_test.cpp (2 cores; -g2..-g4 leave fewer, larger leaves).
+// Granularity when none is given, by measurement on 2 cores
+// (scripts/bench-graded.sh, tests/parallel/bench_test.cpp): -g4 was fastest
+// for -j2 on the graded pipe (15M triangles) and a uniform square (1.5M);
+// -g1 and -g2 make so many small leaves that the master and the leaves'
+// memory dominate, -g5 and -g6 were no faster and balance worse.
 inline constexpr unsigned default_granularity = 4;
 
 // Refines `mesh` (the input refine::refine_mesh takes) in parallel.  Throws

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <condition_variable>
 #include <exception>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -17,6 +18,7 @@
 #include "geometry/constructions.hpp"
 #include "mesh/traverse.hpp"
 #include "parallel/scheduler.hpp"
+#include "parallel/segment_labels.hpp"
 #include "parallel/worker.hpp"
 
 namespace gpdr::parallel {
@@ -56,6 +58,130 @@ void merge(refine::RefineReport& into, refine::RefineReport& from) {
     from.new_vertices = {};
 }
 
+// The master loop and the worker threads.  Each worker has two assignment
+// entries (Scheduler): the leaf it refines and, outside checked mode, the
+// next one, handed out while it still refines, so that it goes on at once
+// instead of waiting for the master to take its leaf back; the master
+// completes the finished leaf meanwhile.  A worker that finds nothing to do
+// takes over another's next leaf that has not started yet.
+void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& scheduler, const ParallelOptions& options,
+                 ParallelReport& report, std::exception_ptr& failure, const std::function<void()>& check) {
+    struct Task {
+        int entry = -1;
+        NodeId leaf = no_node;
+    };
+    struct Finished {
+        int entry;
+        bool split, stopped, outgrew_root;
+        std::vector<Routed> outbox;
+    };
+    struct Slot {
+        std::condition_variable cv;
+        Task current, next;  // current: the worker's (it may be refining it)
+        std::vector<Finished> finished;
+    };
+    const auto threads = static_cast<unsigned>(workers.size());
+    std::mutex mutex;
+    std::condition_variable master_cv;
+    std::vector<Slot> slots(threads);
+    bool quit = false;
+    std::vector<std::thread> pool;
+    for (unsigned w = 0; w < threads; ++w) {
+        pool.emplace_back([&, w] {
+            Worker& worker = *workers[w];
+            Slot& slot = slots[w];
+            std::unique_lock lock(mutex);
+            for (;;) {
+                const auto t0 = Clock::now();
+                slot.cv.wait(lock, [&] { return quit || slot.current.leaf != no_node; });
+                worker.times.waiting += seconds(t0, Clock::now());
+                if (quit) return;
+                const Task task = slot.current;
+                lock.unlock();
+                bool split = false;
+                try {
+                    split = worker.run(task.leaf, task.entry + 1);
+                } catch (...) {
+                    lock.lock();
+                    if (!failure) failure = std::current_exception();
+                    lock.unlock();
+                    worker.stopped = true;
+                }
+                lock.lock();
+                slot.finished.push_back({task.entry, split, worker.stopped, worker.outgrew_root, std::move(worker.outbox)});
+                worker.outbox.clear();
+                slot.current = slot.next;
+                slot.next = {};
+                master_cv.notify_one();
+            }
+        });
+    }
+    {
+        std::unique_lock lock(mutex);
+        unsigned busy = 0;  // assignments not completed
+        bool stop = false, need_check = false;
+        for (;;) {
+            const auto t0 = Clock::now();
+            for (Slot& slot : slots) {
+                for (Finished& f : slot.finished) {
+                    --busy;
+                    scheduler.complete(f.entry, f.split, f.outbox, f.outgrew_root);
+                    if (f.stopped) stop = true;
+                    need_check = options.checked;
+                }
+                slot.finished.clear();
+            }
+            if (need_check && busy == 0) {
+                check();
+                need_check = false;
+            }
+            if (!stop && !failure && !need_check) {
+                // Idle workers first (a finished worker's entries are both
+                // free: its results were just completed) ...
+                for (unsigned w = 0; w < threads; ++w) {
+                    Slot& slot = slots[w];
+                    if (slot.current.leaf != no_node) continue;
+                    const int entry = static_cast<int>(2 * w);
+                    NodeId leaf = scheduler.assign(entry, busy);
+                    if (leaf != no_node) {
+                        ++busy;
+                    } else {
+                        const auto donor = std::find_if(slots.begin(), slots.end(),
+                                                        [](const Slot& s) { return s.next.leaf != no_node; });
+                        if (donor == slots.end()) break;
+                        scheduler.move_assignment(donor->next.entry, entry);
+                        leaf = donor->next.leaf;
+                        donor->next = {};
+                    }
+                    slot.current = {entry, leaf};
+                    slot.cv.notify_one();
+                }
+                // ... then the next leaf of each busy worker (not in checked
+                // mode, whose checks need every worker idle now and then).
+                for (unsigned w = 0; w < threads && !options.checked; ++w) {
+                    Slot& slot = slots[w];
+                    if (slot.current.leaf == no_node || slot.next.leaf != no_node) continue;
+                    const int entry = slot.current.entry ^ 1;
+                    const NodeId leaf = scheduler.assign(entry, busy);
+                    if (leaf == no_node) break;
+                    ++busy;
+                    slot.next = {entry, leaf};
+                }
+            }
+            const auto t1 = Clock::now();
+            report.master.managing += seconds(t0, t1);
+            if (busy == 0) break;
+            master_cv.wait(lock, [&] {
+                return std::any_of(slots.begin(), slots.end(), [](const Slot& s) { return !s.finished.empty(); });
+            });
+            report.master.waiting += seconds(t1, Clock::now());
+        }
+        quit = true;
+        for (auto& s : slots) s.cv.notify_one();
+    }
+    for (auto& t : pool) t.join();
+}
+
 }  // namespace
 
 void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in, const ParallelOptions& options,
@@ -76,13 +202,15 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in
     }
 
     const auto start = Clock::now();
+    SegmentLabels labels(mesh, settings.segment_ends);
+    settings.segment_ends = labels.ends();
     refine::RefineRun run(mesh, settings);
     const Square root = root_square(mesh);
     Quadtree tree(root.x0, root.y0, root.side);
     CellRecords records;
     std::vector<std::unique_ptr<Worker>> workers;
     for (unsigned w = 0; w < threads; ++w)
-        workers.push_back(std::make_unique<Worker>(static_cast<int>(w), mesh, run, tree, records, options));
+        workers.push_back(std::make_unique<Worker>(mesh, run, tree, records, options));
 
     // The first leaf: the root, every triangle counted and classified.
     Node& root_node = tree.node(Quadtree::root());
@@ -110,8 +238,7 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in
     report.master.managing += seconds(start, Clock::now());
 
     std::exception_ptr failure;
-    bool stop = false;
-    auto check = [&] {
+    const std::function<void()> check = [&] {
         verify_quadtree(mesh, tree, records, report.problems);
         ++report.checks;
         for (const auto& w : workers)
@@ -128,94 +255,15 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in
             if (leaf == no_node) break;
             const auto t1 = Clock::now();
             report.master.managing += seconds(t0, t1);
-            const bool split = worker.run(leaf);
+            const bool split = worker.run(leaf, 1);
             const auto t2 = Clock::now();
-            scheduler.complete(worker, split);
+            scheduler.complete(0, split, worker.outbox, worker.outgrew_root);
             if (options.checked) check();
             report.master.managing += seconds(t2, Clock::now());
             if (worker.stopped) break;
         }
     } else {
-        std::mutex mutex;
-        std::condition_variable master_cv;
-        struct Slot {
-            std::condition_variable cv;
-            NodeId task = no_node;
-            bool finished = false;
-            bool split = false;
-        };
-        std::vector<Slot> slots(threads);
-        bool quit = false;
-        std::vector<std::thread> pool;
-        for (unsigned w = 0; w < threads; ++w) {
-            pool.emplace_back([&, w] {
-                Worker& worker = *workers[w];
-                Slot& slot = slots[w];
-                std::unique_lock lock(mutex);
-                for (;;) {
-                    const auto t0 = Clock::now();
-                    slot.cv.wait(lock, [&] { return quit || slot.task != no_node; });
-                    worker.times.waiting += seconds(t0, Clock::now());
-                    if (quit) return;
-                    const NodeId leaf = slot.task;
-                    lock.unlock();
-                    bool split = false;
-                    try {
-                        split = worker.run(leaf);
-                    } catch (...) {
-                        lock.lock();
-                        if (!failure) failure = std::current_exception();
-                        lock.unlock();
-                        worker.stopped = true;
-                    }
-                    lock.lock();
-                    slot.task = no_node;
-                    slot.split = split;
-                    slot.finished = true;
-                    master_cv.notify_one();
-                }
-            });
-        }
-        {
-            std::unique_lock lock(mutex);
-            unsigned busy = 0;
-            bool need_check = false;
-            for (;;) {
-                const auto t0 = Clock::now();
-                for (unsigned w = 0; w < threads; ++w) {
-                    if (!slots[w].finished) continue;
-                    slots[w].finished = false;
-                    --busy;
-                    scheduler.complete(*workers[w], slots[w].split);
-                    if (workers[w]->stopped) stop = true;
-                    need_check = options.checked;
-                }
-                if (need_check && busy == 0) {
-                    check();
-                    need_check = false;
-                }
-                if (!stop && !failure && !need_check) {
-                    for (unsigned w = 0; w < threads; ++w) {
-                        if (slots[w].task != no_node) continue;
-                        const NodeId leaf = scheduler.assign(static_cast<int>(w), busy);
-                        if (leaf == no_node) break;
-                        slots[w].task = leaf;
-                        ++busy;
-                        slots[w].cv.notify_one();
-                    }
-                }
-                const auto t1 = Clock::now();
-                report.master.managing += seconds(t0, t1);
-                if (busy == 0) break;
-                master_cv.wait(lock, [&] {
-                    return std::any_of(slots.begin(), slots.end(), [](const Slot& s) { return s.finished; });
-                });
-                report.master.waiting += seconds(t1, Clock::now());
-            }
-            quit = true;
-            for (auto& s : slots) s.cv.notify_one();
-        }
-        for (auto& t : pool) t.join();
+        run_threads(workers, scheduler, options, report, failure, check);
     }
     if (failure) std::rethrow_exception(failure);
 
@@ -238,6 +286,7 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in
     report.leaves = leaves.size();
     workers.clear();  // the pools give their spare slots back
     refine::count_left(mesh, run, std::move(given_up), report.refine);
+    labels.restore();
     report.master.managing += seconds(t_end, Clock::now());
 }
 

@@ -45,7 +45,7 @@ struct ParallelReport {
     std::uint64_t splits = 0;          // leaf splits
     std::uint64_t leaves = 0;          // leaves at the end
     int depth = 0;                     // deepest leaf level
-    unsigned most_concurrent = 0;      // most leaves refined at once
+    unsigned most_concurrent = 0;      // most leaves held at once (refined or handed out next)
     std::uint64_t handed_off_local = 0;   // work routed by a worker into its own buffer zone
     std::uint64_t handed_off_master = 0;  // work routed through the master
     // Triangles created larger than relation (9) allows for some leaf (the

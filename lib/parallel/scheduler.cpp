@@ -81,8 +81,13 @@ void Scheduler::flush_inbox(NodeId leaf) {
     }
 }
 
-NodeId Scheduler::assign(int w, unsigned busy) {
-    if (active_.size() <= static_cast<std::size_t>(w)) active_.resize(w + 1);
+void Scheduler::park(long k, NodeId x, NodeId z) {
+    const std::int32_t holder = tree_.node(z).owner.load(std::memory_order_relaxed) - 1;
+    active_[static_cast<std::size_t>(holder)].parked.push_back({k, x});
+}
+
+NodeId Scheduler::assign(int entry, unsigned busy) {
+    if (active_.size() <= static_cast<std::size_t>(entry)) active_.resize(entry + 1);
     if (serial_ && busy > 0) return no_node;
     std::vector<std::pair<long, NodeId>> blocked;
     NodeId chosen = no_node;
@@ -96,7 +101,7 @@ NodeId Scheduler::assign(int w, unsigned busy) {
             continue;
         }
         if (i.held) {
-            blocked.push_back({k, x});  // (its work cannot be read now)
+            park(k, x, x);  // (its work cannot be read now)
             continue;
         }
         if (!has_work(x)) {
@@ -109,10 +114,10 @@ NodeId Scheduler::assign(int w, unsigned busy) {
             continue;
         }
         tree_.zone(x, zone_scratch_);
-        const bool free = std::none_of(zone_scratch_.begin(), zone_scratch_.end(),
+        const auto held = std::find_if(zone_scratch_.begin(), zone_scratch_.end(),
                                        [&](NodeId z) { return info(z).held; });
-        if (!free) {
-            blocked.push_back({k, x});
+        if (held != zone_scratch_.end()) {
+            park(k, x, *held);
             continue;
         }
         chosen = x;
@@ -134,12 +139,12 @@ NodeId Scheduler::assign(int w, unsigned busy) {
         }
     }
     info(chosen).queued = false;
-    Active& a = active_[w];
+    Active& a = active_[entry];
     a.leaf = chosen;
     a.zone = zone_scratch_;
     for (NodeId z : a.zone) {
         info(z).held = true;
-        tree_.node(z).owner.store(w + 1, std::memory_order_relaxed);
+        tree_.node(z).owner.store(entry + 1, std::memory_order_relaxed);
         flush_inbox(z);
     }
     ++report_.assignments;
@@ -149,8 +154,15 @@ NodeId Scheduler::assign(int w, unsigned busy) {
     return chosen;
 }
 
-void Scheduler::complete(Worker& worker, bool split) {
-    Active& a = active_[worker.id()];
+void Scheduler::move_assignment(int from, int to) {
+    if (active_.size() <= static_cast<std::size_t>(to)) active_.resize(to + 1);
+    active_[to] = std::move(active_[from]);
+    active_[from] = Active{};
+    for (NodeId z : active_[to].zone) tree_.node(z).owner.store(to + 1, std::memory_order_relaxed);
+}
+
+void Scheduler::complete(int entry, bool split, std::vector<Routed>& outbox, bool outgrew_root) {
+    Active& a = active_[entry];
     const NodeId leaf = a.leaf;
     if (split) {
         // Publish the children before the parent turns internal: a worker
@@ -181,9 +193,11 @@ void Scheduler::complete(Worker& worker, bool split) {
     }
     a.leaf = no_node;
     a.zone.clear();
-    for (const Routed& r : worker.outbox) deliver(r);
-    worker.outbox.clear();
-    if (worker.outgrew_root) serial_ = true;
+    for (const auto& p : a.parked) queue_.push(p);
+    a.parked.clear();
+    for (const Routed& r : outbox) deliver(r);
+    outbox.clear();
+    if (outgrew_root) serial_ = true;
 }
 
 // ---- checked mode ---------------------------------------------------------------

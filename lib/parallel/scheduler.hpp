@@ -55,12 +55,20 @@ public:
 
     // Queues a leaf that may have work (master thread only, leaf not held).
     void offer(NodeId leaf);
-    // The next leaf for worker w, its zone held for w; no_node if none can
-    // be handed out now.
-    NodeId assign(int w, unsigned busy);
-    // Worker w returned its leaf (split or not): frees its zone, applies
-    // the split, takes the worker's outbox.
-    void complete(Worker& worker, bool split);
+    // An ASSIGNMENT is a leaf handed out with its zone held, under an entry
+    // number the caller chooses among those not in use (a worker has two:
+    // the leaf it refines and the next one, handed out before it finishes).
+    // Node::owner of the zone's leaves is entry + 1 meanwhile: the tag the
+    // worker refines under.
+    //
+    // The next leaf for entry `entry`, its zone held; no_node if none can be
+    // handed out now (`busy`: the assignments not completed).
+    NodeId assign(int entry, unsigned busy);
+    // The assignment of entry `from`, not started, moves to entry `to`.
+    void move_assignment(int from, int to);
+    // The worker refining entry's leaf returned it (split or not): frees its
+    // zone, applies the split, takes the work it routed out of its zone.
+    void complete(int entry, bool split, std::vector<Routed>& outbox, bool outgrew_root);
     // Work for a leaf outside the sender's zone.
     void deliver(const Routed& r);
     bool serial() const { return serial_; }
@@ -79,12 +87,20 @@ private:
     struct Active {
         NodeId leaf = no_node;
         std::vector<NodeId> zone;
+        // Queue entries found blocked by this zone: they go back to the
+        // queue when it is freed, and are not looked at (their zones not
+        // searched again) before.  Another zone may free first and make an
+        // entry assignable sooner; waiting for the one that blocked it only
+        // delays it.
+        std::vector<std::pair<long, NodeId>> parked;
     };
     Info& info(NodeId id);
     bool has_work(NodeId leaf) const;
     long key(NodeId leaf) const;
     void push_into(NodeId leaf, const Routed& r);
     void flush_inbox(NodeId leaf);
+    // Parks queue entry (k, x) with the assignment whose zone holds leaf z.
+    void park(long k, NodeId x, NodeId z);
 
     Quadtree& tree_;
     ParallelReport& report_;
@@ -92,7 +108,7 @@ private:
     bool serial_ = false;
     std::vector<Info> info_;
     std::priority_queue<std::pair<long, NodeId>, std::vector<std::pair<long, NodeId>>, std::greater<>> queue_;
-    std::vector<Active> active_;
+    std::vector<Active> active_;  // by entry
     std::vector<NodeId> zone_scratch_;
 };
 

@@ -56,10 +56,9 @@ CellRecord cell_record(const Quadtree& tree, const Point& centre, double radius_
            std::uint64_t(y_lo);
 }
 
-Worker::Worker(int id, mesh::Mesh& mesh, refine::RefineRun& run, Quadtree& tree, CellRecords& records,
+Worker::Worker(mesh::Mesh& mesh, refine::RefineRun& run, Quadtree& tree, CellRecords& records,
                const ParallelOptions& options)
-    : id_(id),
-      mesh_(mesh),
+    : mesh_(mesh),
       run_(run),
       tree_(tree),
       records_(records),
@@ -122,7 +121,7 @@ void Worker::apply(CellRecord record, int delta, bool check_zone) {
             if (delta > 0) ++relation9_exceptions;
         } else {
             n.count.store(n.count.load(std::memory_order_relaxed) + delta, std::memory_order_relaxed);
-            if (check_zone && options_.checked && leaf != no_node && tree_.node(leaf).owner.load(std::memory_order_relaxed) != id_ + 1)
+            if (check_zone && options_.checked && leaf != no_node && tree_.node(leaf).owner.load(std::memory_order_relaxed) != tag_)
                 ++zone_escapes;
         }
     }
@@ -142,7 +141,20 @@ void Worker::uncount(mesh::TriangleId t) {
     const CellRecord record = records_[i];
     if (record == 0) return;
     records_[i] = 0;
-    apply(record, -1, false);
+    if (record & counted_bit)
+        apply(record, -1, false);
+    else
+        pending_[record & ~pending_bit].live = false;  // created and killed in one level: never counted
+}
+
+void Worker::flush_pending() {
+    for (const Pending& p : pending_) {
+        if (!p.live) continue;
+        const std::uint32_t i = mesh::index(p.t);
+        records_[i] = 0;
+        count(p.t, p.circumcircle);
+    }
+    pending_.clear();
 }
 
 void Worker::count_all() {
@@ -160,7 +172,14 @@ void Worker::triangles_killed(std::span<const mesh::TriangleId> killed) {
 
 void Worker::triangle_created(mesh::TriangleId t, const geometry::Circle& circumcircle) {
     uncount(t);
-    count(t, circumcircle);
+    if (current_ == no_node) {
+        count(t, circumcircle);
+        return;
+    }
+    const std::uint32_t i = mesh::index(t);
+    records_.ensure(i >> 16, true);  // (read before written: see ChunkTable::ensure)
+    records_[i] = pending_bit | pending_.size();
+    pending_.push_back({t, true, circumcircle});
 }
 
 // ---- routing ---------------------------------------------------------------------
@@ -177,7 +196,7 @@ void Worker::deliver(const Routed& r, NodeId splitting) {
     }
     Node& n = tree_.node(x);
     if (n.get_kind() != NodeKind::internal && n.state != nullptr &&
-        n.owner.load(std::memory_order_relaxed) == id_ + 1) {
+        n.owner.load(std::memory_order_relaxed) == tag_) {
         // A leaf of this worker's zone (Fig. 4 line 9).
         refine::Leaf& w = n.state->work;
         if (r.is_triangle)
@@ -236,7 +255,7 @@ bool Worker::split(NodeId leaf) {
         const NodeId c = tree_.child(leaf, q, nodes_);
         Node& n = tree_.node(c);
         n.state = new_leaf_state(c);
-        n.owner.store(id_ + 1, std::memory_order_relaxed);
+        n.owner.store(tag_, std::memory_order_relaxed);
     }
     refine::Leaf& work = tree_.node(leaf).state->work;
     for (int j = work.lowest_level(); j >= 0 && j < refine::Leaf::bucket_count; ++j) {
@@ -255,15 +274,19 @@ bool Worker::split(NodeId leaf) {
 // fewer, longer runs).  Splitting later would leave one worker refining a
 // large part of the mesh while the others wait for its buffer zone.
 bool Worker::should_split(const Node& n, LeafState& state) {
-    if (stopped || n.level >= max_level || n.count.load(std::memory_order_relaxed) != 0) return false;
+    if (stopped || n.level >= max_level) return false;
     const int lowest = state.work.lowest_level();
-    return lowest >= 2 + static_cast<int>(run_.settings().granularity) ||
-           (lowest < 0 && state.work.subsegment_entries() != 0);
+    const bool work_is_childrens = lowest >= 2 + static_cast<int>(run_.settings().granularity) ||
+                                   (lowest < 0 && state.work.subsegment_entries() != 0);
+    if (!work_is_childrens) return false;
+    flush_pending();  // (the count must be exact now)
+    return n.count.load(std::memory_order_relaxed) == 0;
 }
 
-bool Worker::run(NodeId leaf) {
+bool Worker::run(NodeId leaf, std::int32_t tag) {
     const auto t0 = Clock::now();
     current_ = leaf;
+    tag_ = tag;
     Node& n = tree_.node(leaf);
     LeafState& state = *n.state;
     // Fig. 4, one σ level at a time (levels i_min .. i_min + g at most), so
@@ -282,6 +305,7 @@ bool Worker::run(NodeId leaf) {
             break;
         }
     }
+    flush_pending();
     const auto t1 = Clock::now();
     times.refining += std::chrono::duration<double>(t1 - t0).count();
 
@@ -293,6 +317,7 @@ bool Worker::run(NodeId leaf) {
     for (const auto& s : subsegments) route_subsegment(s, no_node);
     if (split_now) split(leaf);
     current_ = no_node;
+    tag_ = 0;
     times.managing += seconds_since(t1);
     return split_now;
 }

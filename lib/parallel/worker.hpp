@@ -57,8 +57,12 @@ struct Routed {
 
 // Per-triangle-slot record of the cells a triangle is counted in:
 // bit 63 set, level (6 bits) << 56, cell mask (4 bits) << 52, ix << 26, iy
-// (26 bits each); 0 = not counted.
+// (26 bits each); 0 = not counted.  While a worker refines, a new triangle's
+// slot holds bit 62 and its index in the worker's pending list instead (see
+// Worker::flush_pending).
 using CellRecord = std::uint64_t;
+inline constexpr CellRecord counted_bit = std::uint64_t{1} << 63;
+inline constexpr CellRecord pending_bit = std::uint64_t{1} << 62;
 using CellRecords = mesh::ChunkTable<CellRecord, 16, (mesh::max_triangles >> 16)>;
 
 // Computes the record of a triangle with this circumcircle (pure).
@@ -66,15 +70,15 @@ CellRecord cell_record(const Quadtree& tree, const Point& centre, double radius_
 
 class Worker final : public refine::MeshObserver {
 public:
-    Worker(int id, mesh::Mesh& mesh, refine::RefineRun& run, Quadtree& tree, CellRecords& records,
+    Worker(mesh::Mesh& mesh, refine::RefineRun& run, Quadtree& tree, CellRecords& records,
            const ParallelOptions& options);
 
     // Counts every live triangle (single-threaded, before refinement starts).
     void count_all();
-    // Refines leaf `leaf` (the master has made the worker the owner of its
-    // zone): Fig. 4 lines 1-12, routing of handed-off work, and the split
-    // (line 13).  Returns whether the leaf split.
-    bool run(NodeId leaf);
+    // Refines leaf `leaf`, whose zone the master holds for this run under
+    // `tag` (Node::owner): Fig. 4 lines 1-12, routing of handed-off work,
+    // and the split (line 13).  Returns whether the leaf split.
+    bool run(NodeId leaf, std::int32_t tag);
 
     void triangles_killed(std::span<const mesh::TriangleId> killed) override;
     void triangle_created(mesh::TriangleId t, const geometry::Circle& circumcircle) override;
@@ -82,7 +86,7 @@ public:
     LeafState* new_leaf_state(NodeId leaf);
 
     refine::RefineReport report;
-    std::vector<Routed> outbox;  // emptied by the master after each run
+    std::vector<Routed> outbox;  // handed to the master after each run
     ThreadTimes times;
     std::uint64_t handed_off_local = 0;
     std::uint64_t relation9_exceptions = 0;
@@ -91,11 +95,19 @@ public:
     bool stopped = false;
     mesh::Pool& pool() { return pool_; }
     refine::LeafRefiner& refiner() { return refiner_; }
-    int id() const { return id_; }
 
 private:
     void count(mesh::TriangleId t, const geometry::Circle& circumcircle);
     void uncount(mesh::TriangleId t);
+    // Counts the triangles created since the last call that are still
+    // alive.  Most triangles a run creates die within the same run (each
+    // insertion kills about four), and nobody reads a count of this
+    // worker's zone before the run ends but the worker itself, so their
+    // counting is put off until the run ends or the worker needs its leaf's
+    // count, and a triangle that died meanwhile is never counted at all.
+    // (The master reads only internal nodes' counts while a worker runs,
+    // and may read them before any increment anyway.)
+    void flush_pending();
     void apply(CellRecord record, int delta, bool check_zone);
     // Where the work item should go: a leaf of this worker's zone (pushed
     // there) or the master's outbox.
@@ -106,7 +118,6 @@ private:
     bool should_split(const Node& n, LeafState& state);
     bool split(NodeId leaf);
 
-    int id_;
     mesh::Mesh& mesh_;
     refine::RefineRun& run_;
     Quadtree& tree_;
@@ -116,7 +127,14 @@ private:
     refine::LeafRefiner refiner_;
     NodeAllocator nodes_;
     std::deque<LeafState> leaf_states_;
+    struct Pending {
+        mesh::TriangleId t;
+        bool live;
+        geometry::Circle circumcircle;
+    };
+    std::vector<Pending> pending_;
     NodeId current_ = no_node;
+    std::int32_t tag_ = 0;  // the zone's Node::owner while a run goes on
     // Cells found lately: consecutive triangles mostly share cells, and a
     // cell's node never changes (nodes are never freed).
     struct CachedCell {

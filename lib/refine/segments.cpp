@@ -119,7 +119,7 @@ bool segment_of(const mesh::Mesh& mesh, mesh::TriangleId t, VertexId u, const Se
             info != nullptr && info->segment != mesh::SubsegmentInfo::no_segment &&
             2 * std::size_t{info->segment} + 1 < segments.ends.size()) {
             ends = {segments.ends[2 * info->segment], segments.ends[2 * info->segment + 1]};
-            return true;
+            return ends[0] != mesh::no_vertex;
         }
     }
     // Walk both ways along the chain (bounded: a very long chain just
@@ -138,6 +138,17 @@ bool segment_of(const mesh::Mesh& mesh, mesh::TriangleId t, VertexId u, const Se
 }
 
 }  // namespace
+
+bool walk_segment_ends(const mesh::Mesh& mesh, EdgeRef e, std::array<VertexId, 2>& ends) {
+    constexpr int limit = 256;
+    const VertexId a = mesh.origin(e), b = mesh.destination(e);
+    const VertexId forward = chain_end(mesh, e, a, b, limit);
+    if (forward == mesh::no_vertex) return false;
+    const VertexId backward = chain_end(mesh, e, b, a, limit);
+    if (backward == mesh::no_vertex) return false;
+    ends = {forward, backward};
+    return true;
+}
 
 bool small_angle_protected(const mesh::Mesh& mesh, mesh::TriangleId t, int k, const SegmentEnds& segments) {
     const mesh::Triangle& r = mesh.triangle(t);

@@ -102,10 +102,18 @@ bool acute_corner(const mesh::Mesh& mesh, mesh::EdgeRef e, mesh::VertexId a, mes
 double split_parameter(const mesh::Mesh& mesh, mesh::EdgeRef e);
 
 // Input segment ends by SubsegmentInfo::segment: 2 per segment (may be
-// empty; then segment ends are found by walking the subsegment chain).
+// empty; then segment ends are found by walking the subsegment chain).  A
+// pair of no_vertex means "unknown": no protection.
 struct SegmentEnds {
     std::span<const mesh::VertexId> ends;
 };
+
+// The ends of the input segment that subsegment e lies on, found by walking
+// the chain of subsegments through segment vertices both ways from e (at
+// most 256 steps each way); false when a walk is longer or breaks.  The
+// walk may go anywhere along the segment: the parallel layer calls it before
+// its workers start, never while they run (parallel/segment_labels.hpp).
+bool walk_segment_ends(const mesh::Mesh& mesh, mesh::EdgeRef e, std::array<mesh::VertexId, 2>& ends);
 
 // The small-input-angle rule above for triangle t whose shortest edge is
 // edge k.

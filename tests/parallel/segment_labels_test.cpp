@@ -1,0 +1,95 @@
+// Temporary segment labels (lib/parallel/segment_labels.hpp): every
+// subsegment gets the ends of the input segment it lies on, the halves of a
+// split subsegment keep them, and restore() gives back the original indices.
+
+#include <catch2/catch.hpp>
+
+#include <map>
+#include <utility>
+
+#include "geometry/predicates.hpp"
+#include "parallel/segment_labels.hpp"
+#include "refine/refine_support.hpp"
+
+namespace gpdr::parallel::testing {
+
+namespace {
+
+using Key = std::pair<std::uint32_t, std::uint32_t>;
+
+std::map<Key, std::uint32_t> segment_indices(const mesh::Mesh& m) {
+    std::map<Key, std::uint32_t> out;
+    m.subsegments().for_each([&](mesh::VertexId a, mesh::VertexId b, const mesh::SubsegmentInfo& info) {
+        out[{mesh::index(a), mesh::index(b)}] = info.segment;
+    });
+    return out;
+}
+
+// Whether every subsegment lies on the segment between its label's ends
+// (collinear, inside the ends' box).
+void check_labels(const mesh::Mesh& m, const SegmentLabels& labels) {
+    const auto ends = labels.ends();
+    m.subsegments().for_each([&](mesh::VertexId a, mesh::VertexId b, const mesh::SubsegmentInfo& info) {
+        REQUIRE(info.segment != mesh::SubsegmentInfo::no_segment);
+        REQUIRE(2 * std::size_t{info.segment} + 1 < ends.size());
+        const geometry::Point& p = m.point(ends[2 * info.segment]);
+        const geometry::Point& q = m.point(ends[2 * info.segment + 1]);
+        for (const mesh::VertexId v : {a, b}) {
+            const geometry::Point& x = m.point(v);
+            // Split points are rounded: nearly collinear, not exactly.
+            const double cross = (q.x - p.x) * (x.y - p.y) - (q.y - p.y) * (x.x - p.x);
+            const double len2 = (q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y);
+            CHECK(cross * cross <= 1e-20 * len2 * len2);
+            CHECK(x.x >= std::min(p.x, q.x) - 1e-12);
+            CHECK(x.x <= std::max(p.x, q.x) + 1e-12);
+        }
+    });
+}
+
+}  // namespace
+
+TEST_CASE("segment labels give every subsegment its segment's ends, through splits", "[parallel]") {
+    triangulate::Pslg p;
+    p.points = {{0, 0}, {4, 0}, {4, 3}, {2.2, 3}, {2, 0.5}, {1.8, 3}, {0, 3}};
+    p.segments = {0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 0};
+    mesh::Mesh m = refine::testing::cdt(p);
+    const auto before = segment_indices(m);
+
+    SECTION("no ends given: every subsegment is labelled") {
+        SegmentLabels labels(m, {});
+        CHECK(labels.ends().size() == 2 * before.size());
+        check_labels(m, labels);
+        // Refinement splits subsegments; the halves keep their labels.
+        refine::RefineSettings s;
+        s.criteria.min_angle_degrees = 25;
+        s.criteria.max_area = 0.05;
+        s.segment_ends = labels.ends();
+        refine::RefineReport report;
+        refine::refine_mesh(m, s, report);
+        REQUIRE(report.segment_splits > 0);
+        check_labels(m, labels);
+        labels.restore();
+        for (const auto& [key, segment] : segment_indices(m)) {
+            CHECK(segment < p.segments.size() / 2);  // an input segment's index again
+        }
+    }
+    SECTION("the caller's ends answer for every subsegment: nothing is labelled") {
+        const auto given = refine::testing::segment_ends(p);
+        SegmentLabels labels(m, given);
+        CHECK(labels.ends().size() == given.size());
+        CHECK(segment_indices(m) == before);
+        labels.restore();
+        CHECK(segment_indices(m) == before);
+    }
+}
+
+TEST_CASE("segment labels cover a point set's hull edges and are removed again", "[parallel]") {
+    mesh::Mesh m = refine::testing::point_set_mesh(refine::testing::random_points(200, 7));
+    const auto before = segment_indices(m);
+    SegmentLabels labels(m, {});
+    check_labels(m, labels);
+    labels.restore();
+    CHECK(segment_indices(m) == before);
+}
+
+}  // namespace gpdr::parallel::testing

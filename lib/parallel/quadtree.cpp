@@ -30,11 +30,7 @@ Quadtree::Quadtree(double x0, double y0, double side)
     // The rest of the block is left unused (ids are cheap).
 }
 
-Square Quadtree::square(NodeId id) const {
-    const Node& n = node(id);
-    const double s = side_at(n.level);
-    return {x0_ + s * n.ix, y0_ + s * n.iy, s};
-}
+
 
 
 
@@ -102,28 +98,6 @@ double Quadtree::effective_side(NodeId leaf) const {
     for (NodeId a = node(leaf).parent(); a != no_node; a = node(a).parent())
         if (node(a).count.load(std::memory_order_relaxed) != 0) side = side_at(node(a).level);
     return side;
-}
-
-void Quadtree::zone_search(NodeId id, const Square& target, double target_side, double above,
-                           std::vector<NodeId>& out) const {
-    const Node& n = node(id);
-    const Square s = square(id);
-    const NodeKind k = n.get_kind();
-    // Every leaf below has ℓe <= max(ℓ(n), above): prune when even that is too far.
-    const double bound = std::max(s.side, above);
-    const double reach = 0.5 * (target_side + bound);
-    if (squared_distance(target, s) >= reach * reach) return;
-    if (k != NodeKind::internal) {
-        out.push_back(id);
-        return;
-    }
-    const double below = n.count.load(std::memory_order_relaxed) != 0 ? std::max(above, s.side) : above;
-    for (int q = 0; q < 4; ++q) zone_search(n.child(q), target, target_side, below, out);
-}
-
-void Quadtree::zone(NodeId leaf, std::vector<NodeId>& out) const {
-    out.clear();
-    zone_search(root(), square(leaf), effective_side(leaf), 0.0, out);
 }
 
 void Quadtree::leaves(std::vector<NodeId>& out) const {

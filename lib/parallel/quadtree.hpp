@@ -100,7 +100,11 @@ public:
     Quadtree(double x0, double y0, double side);
 
     double side_at(int level) const { return sides_[level]; }
-    Square square(NodeId id) const;
+    Square square(NodeId id) const {
+        const Node& n = node(id);
+        const double s = side_at(n.level);
+        return {x0_ + s * n.ix, y0_ + s * n.iy, s};
+    }
     Square cell_square(int level, std::uint32_t ix, std::uint32_t iy) const {
         const double s = side_at(level);
         return {x0_ + s * ix, y0_ + s * iy, s};
@@ -145,7 +149,18 @@ public:
     // ℓe(leaf) (see above).
     double effective_side(NodeId leaf) const;
     // BUF(leaf) ∪ {leaf}: the leaves L' with dist(leaf, L') < (ℓe(leaf) + ℓe(L'))/2.
-    void zone(NodeId leaf, std::vector<NodeId>& out) const;
+    void zone(NodeId leaf, std::vector<NodeId>& out) const {
+        zone_until(leaf, out, [](NodeId) { return false; });
+    }
+    // The same search, stopped at the first zone leaf for which stop(leaf)
+    // holds: that leaf, or no_node when none does (then `out` is the zone).
+    // The master asks "is any leaf of the zone held?" for every candidate
+    // leaf, and most are blocked: stopping early halves their cost.
+    template <class Stop>
+    NodeId zone_until(NodeId leaf, std::vector<NodeId>& out, Stop&& stop) const {
+        out.clear();
+        return zone_search(root(), square(leaf), effective_side(leaf), 0.0, out, stop);
+    }
     // Every leaf, in depth-first order.
     void leaves(std::vector<NodeId>& out) const;
 
@@ -156,7 +171,24 @@ private:
         return static_cast<std::uint32_t>(static_cast<std::int64_t>(std::min(std::max(0.0, f), top)));
     }
     NodeId allocate(NodeAllocator& alloc);
-    void zone_search(NodeId n, const Square& target, double target_side, double above, std::vector<NodeId>& out) const;
+    template <class Stop>
+    NodeId zone_search(NodeId id, const Square& target, double target_side, double above, std::vector<NodeId>& out,
+                       Stop& stop) const {
+        const Node& n = node(id);
+        const Square s = square(id);
+        // Every leaf below has ℓe <= max(ℓ(n), above): prune when even that is too far.
+        const double reach = 0.5 * (target_side + std::max(s.side, above));
+        if (squared_distance(target, s) >= reach * reach) return no_node;
+        if (n.get_kind() != NodeKind::internal) {
+            out.push_back(id);
+            return stop(id) ? id : no_node;
+        }
+        const double below = n.count.load(std::memory_order_relaxed) != 0 ? std::max(above, s.side) : above;
+        for (int q = 0; q < 4; ++q)
+            if (const NodeId found = zone_search(n.child(q), target, target_side, below, out, stop); found != no_node)
+                return found;
+        return no_node;
+    }
 
     double x0_, y0_, side_;
     double shrunk_side_squared_over_16_;  // ℓ_root² / 16 (1 - 2^-30)

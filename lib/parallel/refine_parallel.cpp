@@ -120,53 +120,93 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
         std::unique_lock lock(mutex);
         unsigned busy = 0;  // assignments not completed
         bool stop = false, need_check = false;
+        std::vector<Finished> done;
+        struct Planned {
+            unsigned w;
+            Task task;
+        };
+        std::vector<Planned> planned;
+        std::vector<Task> current(threads);
+        std::vector<char> has_next(threads);
         for (;;) {
             const auto t0 = Clock::now();
-            for (Slot& slot : slots) {
-                for (Finished& f : slot.finished) {
-                    --busy;
-                    scheduler.complete(f.entry, f.split, f.outbox, f.outgrew_root);
-                    if (f.stopped) stop = true;
-                    need_check = options.checked;
-                }
+            // Take the results and what each worker holds, then let go of
+            // the lock while scheduling (the scheduler is the master's
+            // alone), so that finishing workers never wait for it.
+            for (unsigned w = 0; w < threads; ++w) {
+                Slot& slot = slots[w];
+                for (Finished& f : slot.finished) done.push_back(std::move(f));
                 slot.finished.clear();
+                current[w] = slot.current;
+                has_next[w] = slot.next.leaf != no_node;
             }
-            if (need_check && busy == 0) {
+            const bool failed = failure != nullptr;
+            lock.unlock();
+            for (Finished& f : done) {
+                --busy;
+                scheduler.complete(f.entry, f.split, f.outbox, f.outgrew_root);
+                if (f.stopped) stop = true;
+                need_check = options.checked;
+            }
+            done.clear();
+            if (need_check && busy == 0) {  // (every worker waits for a leaf)
                 check();
                 need_check = false;
             }
-            if (!stop && !failure && !need_check) {
-                // Idle workers first (a finished worker's entries are both
+            planned.clear();
+            if (!stop && !failed && !need_check) {
+                // Idle workers first (both entries of an idle worker are
                 // free: its results were just completed) ...
                 for (unsigned w = 0; w < threads; ++w) {
-                    Slot& slot = slots[w];
-                    if (slot.current.leaf != no_node) continue;
+                    if (current[w].leaf != no_node) continue;
                     const int entry = static_cast<int>(2 * w);
-                    NodeId leaf = scheduler.assign(entry, busy);
-                    if (leaf != no_node) {
-                        ++busy;
-                    } else {
-                        const auto donor = std::find_if(slots.begin(), slots.end(),
-                                                        [](const Slot& s) { return s.next.leaf != no_node; });
-                        if (donor == slots.end()) break;
-                        scheduler.move_assignment(donor->next.entry, entry);
-                        leaf = donor->next.leaf;
-                        donor->next = {};
-                    }
-                    slot.current = {entry, leaf};
-                    slot.cv.notify_one();
-                }
-                // ... then the next leaf of each busy worker (not in checked
-                // mode, whose checks need every worker idle now and then).
-                for (unsigned w = 0; w < threads && !options.checked; ++w) {
-                    Slot& slot = slots[w];
-                    if (slot.current.leaf == no_node || slot.next.leaf != no_node) continue;
-                    const int entry = slot.current.entry ^ 1;
                     const NodeId leaf = scheduler.assign(entry, busy);
                     if (leaf == no_node) break;
                     ++busy;
-                    slot.next = {entry, leaf};
+                    planned.push_back({w, {entry, leaf}});
                 }
+                // ... then the next leaf of each busy worker (its other
+                // entry), not in checked mode, whose checks need every
+                // worker idle now and then.
+                for (unsigned w = 0; w < threads && !options.checked; ++w) {
+                    if (current[w].leaf == no_node || has_next[w]) continue;
+                    const int entry = current[w].entry ^ 1;
+                    const NodeId leaf = scheduler.assign(entry, busy);
+                    if (leaf == no_node) break;
+                    ++busy;
+                    planned.push_back({w, {entry, leaf}});
+                }
+            }
+            lock.lock();
+            for (const Planned& p : planned) {
+                // A worker that finished meanwhile starts it at once.
+                Slot& slot = slots[p.w];
+                if (slot.current.leaf == no_node) {
+                    slot.current = p.task;
+                    slot.cv.notify_one();
+                } else {
+                    slot.next = p.task;
+                }
+            }
+            // A worker still idle takes over a next leaf that has not
+            // started (under the lock: its worker may start it any moment),
+            // under an entry its unprocessed results do not use.
+            for (unsigned w = 0; w < threads && !stop && !failure && !need_check; ++w) {
+                Slot& slot = slots[w];
+                if (slot.current.leaf != no_node) continue;
+                const auto donor =
+                    std::find_if(slots.begin(), slots.end(), [](const Slot& s) { return s.next.leaf != no_node; });
+                if (donor == slots.end()) break;
+                int entry = static_cast<int>(2 * w);
+                for (const Finished& f : slot.finished)
+                    if (f.entry == entry) entry ^= 1;
+                if (std::any_of(slot.finished.begin(), slot.finished.end(),
+                                [&](const Finished& f) { return f.entry == entry; }))
+                    continue;  // both entries await completion
+                scheduler.move_assignment(donor->next.entry, entry);
+                slot.current = {entry, donor->next.leaf};
+                donor->next = {};
+                slot.cv.notify_one();
             }
             const auto t1 = Clock::now();
             report.master.managing += seconds(t0, t1);

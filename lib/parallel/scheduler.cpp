@@ -14,11 +14,6 @@
 
 namespace gpdr::parallel {
 
-Scheduler::Info& Scheduler::info(NodeId id) {
-    if (id >= info_.size()) info_.resize(std::max<std::size_t>(id + 1, info_.size() * 2));
-    return info_[id];
-}
-
 bool Scheduler::has_work(NodeId leaf) const {
     const Node& n = tree_.node(leaf);
     return n.state != nullptr && !n.state->work.idle();
@@ -113,11 +108,9 @@ NodeId Scheduler::assign(int entry, unsigned busy) {
             blocked.push_back({i.queued_key, x});
             continue;
         }
-        tree_.zone(x, zone_scratch_);
-        const auto held = std::find_if(zone_scratch_.begin(), zone_scratch_.end(),
-                                       [&](NodeId z) { return info(z).held; });
-        if (held != zone_scratch_.end()) {
-            park(k, x, *held);
+        const NodeId held = tree_.zone_until(x, zone_scratch_, [&](NodeId z) { return info(z).held; });
+        if (held != no_node) {
+            park(k, x, held);
             continue;
         }
         chosen = x;

@@ -75,15 +75,7 @@ public:
     void set_serial() { serial_ = true; }
 
 private:
-    struct Info {
-        bool held = false;
-        // Whether the queue holds an entry for the leaf, and with which key
-        // (entries with another key are stale and dropped when popped): a
-        // leaf is queued once however often it is offered.
-        bool queued = false;
-        long queued_key = 0;
-        std::vector<Routed> inbox;
-    };
+    using Info = MasterInfo;
     struct Active {
         NodeId leaf = no_node;
         std::vector<NodeId> zone;
@@ -94,7 +86,7 @@ private:
         // delays it.
         std::vector<std::pair<long, NodeId>> parked;
     };
-    Info& info(NodeId id);
+    Info& info(NodeId id) { return tree_.node(id).state->master; }
     bool has_work(NodeId leaf) const;
     long key(NodeId leaf) const;
     void push_into(NodeId leaf, const Routed& r);
@@ -106,7 +98,6 @@ private:
     ParallelReport& report_;
     bool checked_;
     bool serial_ = false;
-    std::vector<Info> info_;
     std::priority_queue<std::pair<long, NodeId>, std::vector<std::pair<long, NodeId>>, std::greater<>> queue_;
     std::vector<Active> active_;  // by entry
     std::vector<NodeId> zone_scratch_;

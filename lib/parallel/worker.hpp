@@ -37,14 +37,6 @@ struct OwnedBox {
 };
 OwnedBox owned_box(const Quadtree& tree, NodeId leaf);
 
-struct LeafState {
-    LeafState(double side, const OwnedBox& b) : work(side), box(b) { work.set_owner(&owns, this); }
-    static bool owns(const void* self, const Point& p) { return static_cast<const LeafState*>(self)->box.contains(p); }
-
-    refine::Leaf work;
-    OwnedBox box;
-};
-
 // Work for a leaf outside the routing worker's zone, sent to the master.
 struct Routed {
     bool is_triangle = true;
@@ -53,6 +45,28 @@ struct Routed {
     Point at;                 // the point that decides the leaf
     double radius_squared = 0; // triangles: for the target leaf's σ
     int rank = 0;             // triangles: shape rank
+};
+
+// The master's bookkeeping for a leaf (scheduler.hpp); no worker touches it.
+struct MasterInfo {
+    bool held = false;  // in the zone of an assignment
+    // Whether the queue holds an entry for the leaf, and with which key
+    // (entries with another key are stale and dropped when popped): a leaf
+    // is queued once however often it is offered.
+    bool queued = false;
+    long queued_key = 0;
+    std::vector<Routed> inbox;  // work that arrived while it was held
+};
+
+// Everything a leaf has beyond its quadtree node (Node::state); made by the
+// worker that splits its parent.
+struct LeafState {
+    LeafState(double side, const OwnedBox& b) : work(side), box(b) { work.set_owner(&owns, this); }
+    static bool owns(const void* self, const Point& p) { return static_cast<const LeafState*>(self)->box.contains(p); }
+
+    refine::Leaf work;
+    OwnedBox box;
+    MasterInfo master;
 };
 
 // Per-triangle-slot record of the cells a triangle is counted in:

@@ -1,8 +1,10 @@
 #pragma once
 // Parallel Delaunay refinement (GPDR paper §3): the mesh is overlaid by a
 // quadtree (quadtree.hpp); one master thread keeps the queue of leaves with
-// work and hands a leaf to a free worker only when its buffer zone shares no
-// leaf with the buffer zone of any leaf being refined; each worker runs the
+// work and hands a leaf to a worker only when its buffer zone shares no leaf
+// with the buffer zone of any leaf being refined or handed out (a busy
+// worker is given its next leaf ahead, so it never waits for the master
+// between leaves); each worker runs the
 // paper's Fig. 4 on its leaf (refine::LeafRefiner::refine_leaf: σ levels
 // i_min .. i_min + g), updates the buckets and counters of its zone, and
 // splits the leaf while relation (9) allows.

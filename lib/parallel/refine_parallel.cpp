@@ -222,6 +222,46 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
     for (auto& t : pool) t.join();
 }
 
+// refine::count_left on `threads` threads, each over a slice of the triangle
+// slots: the final pass assesses every triangle (a user triunsuitable() too),
+// about a tenth of a one-thread refinement, which need not run on one thread.
+void count_left_parallel(const mesh::Mesh& mesh, const refine::RefineRun& run,
+                         std::vector<refine::LeafRefiner::GivenUp> given_up, refine::RefineReport& report,
+                         unsigned threads) {
+    refine::sort_given_up(given_up);
+    const std::uint64_t end = mesh.triangle_end();
+    std::vector<refine::RefineReport> parts(threads);
+    std::vector<std::exception_ptr> failures(threads);
+    std::vector<std::thread> pool;
+    for (unsigned i = 0; i < threads; ++i) {
+        parts[i].stopped = report.stopped;
+        const auto first = static_cast<std::uint32_t>(end * i / threads);
+        const auto last = static_cast<std::uint32_t>(end * (i + 1) / threads);
+        auto count = [&, i, first, last] {
+            try {
+                refine::count_left_in(mesh, run, given_up, first, last, parts[i]);
+            } catch (...) {
+                failures[i] = std::current_exception();
+            }
+        };
+        if (threads == 1)
+            count();
+        else
+            pool.emplace_back(count);
+    }
+    for (auto& t : pool) t.join();
+    for (const auto& f : failures)
+        if (f) std::rethrow_exception(f);
+    for (const refine::RefineReport& p : parts) {
+        report.left_small_input_angle += p.left_small_input_angle;
+        report.left_no_split += p.left_no_split;
+        report.left_precision += p.left_precision;
+        report.left_budget += p.left_budget;
+        report.left_other += p.left_other;
+        report.encroached_left += p.encroached_left;
+    }
+}
+
 }  // namespace
 
 void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in, const ParallelOptions& options,
@@ -325,7 +365,7 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in
     tree.leaves(leaves);
     report.leaves = leaves.size();
     workers.clear();  // the pools give their spare slots back
-    refine::count_left(mesh, run, std::move(given_up), report.refine);
+    count_left_parallel(mesh, run, std::move(given_up), report.refine, threads);
     labels.restore();
     report.master.managing += seconds(t_end, Clock::now());
 }

@@ -454,23 +454,43 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q) {
     requeue_if_alive();  // p's cavity missed t (only through rounding): try again
 }
 
+void sort_given_up(std::vector<LeafRefiner::GivenUp>& given_up) {
+    std::stable_sort(given_up.begin(), given_up.end(),
+                     [](const auto& x, const auto& y) { return mesh::index(x.id) < mesh::index(y.id); });
+}
+
 void count_left(const mesh::Mesh& mesh, const RefineRun& run, std::vector<LeafRefiner::GivenUp> given_up,
                 RefineReport& report) {
+    sort_given_up(given_up);
+    count_left_in(mesh, run, given_up, 0, mesh.triangle_end(), report);
+}
+
+void count_left_in(const mesh::Mesh& mesh, const RefineRun& run, std::span<const LeafRefiner::GivenUp> given_up,
+                   std::uint32_t first, std::uint32_t end, RefineReport& report) {
     // The final count of what is left poor, and why.
-    std::stable_sort(given_up.begin(), given_up.end(),
-              [](const auto& x, const auto& y) { return mesh::index(x.id) < mesh::index(y.id); });
     const QualityTest& quality = run.quality();
-    mesh::for_each_triangle(mesh, [&](TriangleId id, const mesh::Triangle& t) {
+    for (std::uint32_t i = first; i < end; ++i) {
+        const TriangleId id{i};
+        const mesh::Triangle& t = mesh.triangle(id);
+        if (!t.live()) continue;
+        // Encroached subsegments, each seen from its triangle of lower id
+        // (as mesh::for_each_edge does).
+        for (int k = 0; k < 3; ++k) {
+            if (!t.is_subsegment(k)) continue;
+            const EdgeRef across = t.n[k];
+            if (!across.is_none() && mesh::index(across.triangle()) < i) continue;
+            if (subsegment_encroached(mesh, EdgeRef(id, k), quality.encroachment_lens())) ++report.encroached_left;
+        }
         const TriangleMeasures m =
             QualityTest::measure(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]));
         bool protected_angle = false;
         if (quality.assess(mesh, id, m, &protected_angle) == Poorness::good) {
             report.left_small_input_angle += protected_angle ? 1 : 0;
-            return;
+            continue;
         }
         // The last give-up recorded for this very triangle.
-        auto it = std::upper_bound(given_up.begin(), given_up.end(), mesh::index(id),
-                                   [](std::uint32_t i, const auto& g) { return i < mesh::index(g.id); });
+        auto it = std::upper_bound(given_up.begin(), given_up.end(), i,
+                                   [](std::uint32_t x, const auto& g) { return x < mesh::index(g.id); });
         std::uint8_t reason = 0xFF;
         while (it != given_up.begin()) {
             --it;
@@ -488,11 +508,7 @@ void count_left(const mesh::Mesh& mesh, const RefineRun& run, std::vector<LeafRe
             ++report.left_budget;
         else
             ++report.left_other;
-    });
-    mesh::for_each_edge(mesh, [&](const mesh::EdgeView& e) {
-        if (e.subsegment && subsegment_encroached(mesh, e.edge, run.quality().encroachment_lens()))
-            ++report.encroached_left;
-    });
+    }
 }
 
 // ---- the sequential driver ---------------------------------------------------

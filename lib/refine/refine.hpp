@@ -226,6 +226,13 @@ private:
 // subsegments left, into `report`.  Single-threaded.
 void count_left(const mesh::Mesh& mesh, const RefineRun& run, std::vector<LeafRefiner::GivenUp> given_up,
                 RefineReport& report);
+// The same pass over triangle slots [first, end) only, adding to the
+// left_* and encroached_left counts of `report` (whose `stopped` says
+// whether a limit stopped the run); `given_up` sorted by sort_given_up.
+// Several threads may count disjoint ranges at once into their own reports.
+void count_left_in(const mesh::Mesh& mesh, const RefineRun& run, std::span<const LeafRefiner::GivenUp> given_up,
+                   std::uint32_t first, std::uint32_t end, RefineReport& report);
+void sort_given_up(std::vector<LeafRefiner::GivenUp>& given_up);
 
 // The sequential refiner: one leaf that never splits, on the calling thread.
 // Requires a constrained Delaunay mesh without ghosts whose boundary edges

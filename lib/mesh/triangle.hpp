@@ -30,6 +30,9 @@ struct Triangle {
     static constexpr std::uint8_t subsegment_bit0 = 1u << 0;  // edge k is a subsegment: bit k
     static constexpr std::uint8_t live_bit = 1u << 3;         // the slot holds a triangle
     static constexpr std::uint8_t mark_bit = 1u << 4;         // scratch: "in the cavity"
+    // Set by refinement when it last assessed the triangle: its small angle
+    // is forced by an input angle, so it is left alone (refine/segments.hpp).
+    static constexpr std::uint8_t small_angle_bit = 1u << 5;
 
     VertexId v[3];
     EdgeRef n[3];
@@ -56,6 +59,7 @@ struct Triangle {
         std::atomic_ref<std::uint32_t>(generation).store(generation + 1, std::memory_order_relaxed);
     }
     bool marked() const { return (flags & mark_bit) != 0; }
+    bool small_angle_protected() const { return (flags & small_angle_bit) != 0; }
     bool is_subsegment(int k) const { return (flags >> k) & 1u; }
     void set_subsegment(int k, bool on) {
         const auto bit = static_cast<std::uint8_t>(subsegment_bit0 << k);

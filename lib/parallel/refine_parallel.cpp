@@ -229,6 +229,7 @@ void count_left_parallel(const mesh::Mesh& mesh, const refine::RefineRun& run,
                          std::vector<refine::LeafRefiner::GivenUp> given_up, refine::RefineReport& report,
                          unsigned threads) {
     refine::sort_given_up(given_up);
+    const bool full = refine::full_count_left(run, report);
     const std::uint64_t end = mesh.triangle_end();
     std::vector<refine::RefineReport> parts(threads);
     std::vector<std::exception_ptr> failures(threads);
@@ -239,7 +240,7 @@ void count_left_parallel(const mesh::Mesh& mesh, const refine::RefineRun& run,
         const auto last = static_cast<std::uint32_t>(end * (i + 1) / threads);
         auto count = [&, i, first, last] {
             try {
-                refine::count_left_in(mesh, run, given_up, first, last, parts[i]);
+                refine::count_left_in(mesh, run, given_up, first, last, full, parts[i]);
             } catch (...) {
                 failures[i] = std::current_exception();
             }
@@ -260,6 +261,7 @@ void count_left_parallel(const mesh::Mesh& mesh, const refine::RefineRun& run,
         report.left_other += p.left_other;
         report.encroached_left += p.encroached_left;
     }
+    if (!full) refine::count_given_up(mesh, given_up, report);
 }
 
 }  // namespace

@@ -151,11 +151,17 @@ void LeafRefiner::classify(Leaf& leaf, TriangleId t) {
 }
 
 void LeafRefiner::classify(Leaf& leaf, TriangleId t, const TriangleMeasures& m) {
-    const mesh::Triangle& r = mesh_.triangle(t);
+    mesh::Triangle& r = mesh_.triangle(t);
     const Point& a = mesh_.point(r.v[0]);
     const Point& b = mesh_.point(r.v[1]);
     const Point& c = mesh_.point(r.v[2]);
-    if (quality_.assess(mesh_, t, m) != Poorness::good) {
+    bool protected_angle = false;
+    const Poorness poorness = quality_.assess(mesh_, t, m, &protected_angle);
+    // Remembered for the final count (count_left): a triangle's assessment
+    // depends on nothing but the triangle, so it holds until the triangle dies.
+    r.flags = static_cast<std::uint8_t>(protected_angle ? r.flags | mesh::Triangle::small_angle_bit
+                                                        : r.flags & ~mesh::Triangle::small_angle_bit);
+    if (poorness != Poorness::good) {
         const QueuedTriangle q{t, r.generation};
         // Poor triangles are routed by their circumcentre; the Steiner point
         // itself is checked again before it is inserted.
@@ -462,12 +468,17 @@ void sort_given_up(std::vector<LeafRefiner::GivenUp>& given_up) {
 void count_left(const mesh::Mesh& mesh, const RefineRun& run, std::vector<LeafRefiner::GivenUp> given_up,
                 RefineReport& report) {
     sort_given_up(given_up);
-    count_left_in(mesh, run, given_up, 0, mesh.triangle_end(), report);
+    const bool full = full_count_left(run, report);
+    count_left_in(mesh, run, given_up, 0, mesh.triangle_end(), full, report);
+    if (!full) count_given_up(mesh, given_up, report);
+}
+
+bool full_count_left(const RefineRun& run, const RefineReport& report) {
+    return run.settings().checked || report.stopped != RefineReport::Stop::none;
 }
 
 void count_left_in(const mesh::Mesh& mesh, const RefineRun& run, std::span<const LeafRefiner::GivenUp> given_up,
-                   std::uint32_t first, std::uint32_t end, RefineReport& report) {
-    // The final count of what is left poor, and why.
+                   std::uint32_t first, std::uint32_t end, bool full, RefineReport& report) {
     const QualityTest& quality = run.quality();
     for (std::uint32_t i = first; i < end; ++i) {
         const TriangleId id{i};
@@ -480,6 +491,10 @@ void count_left_in(const mesh::Mesh& mesh, const RefineRun& run, std::span<const
             const EdgeRef across = t.n[k];
             if (!across.is_none() && mesh::index(across.triangle()) < i) continue;
             if (subsegment_encroached(mesh, EdgeRef(id, k), quality.encroachment_lens())) ++report.encroached_left;
+        }
+        if (!full) {
+            report.left_small_input_angle += t.small_angle_protected() ? 1 : 0;
+            continue;
         }
         const TriangleMeasures m =
             QualityTest::measure(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]));
@@ -508,6 +523,26 @@ void count_left_in(const mesh::Mesh& mesh, const RefineRun& run, std::span<const
             ++report.left_budget;
         else
             ++report.left_other;
+    }
+}
+
+void count_given_up(const mesh::Mesh& mesh, std::span<const LeafRefiner::GivenUp> given_up, RefineReport& report) {
+    // Entries are sorted by slot, in the order they were given up: the last
+    // entry of a slot whose generation is still the slot's names the reason.
+    for (std::size_t j = 0; j < given_up.size(); ++j) {
+        const LeafRefiner::GivenUp& g = given_up[j];
+        if (j + 1 < given_up.size() && given_up[j + 1].id == g.id) continue;  // a later entry of the slot decides
+        const mesh::Triangle& t = mesh.triangle(g.id);
+        if (!t.live()) continue;
+        // The slot's last entry may be for an older triangle: look back for
+        // the newest entry of the live one.
+        std::size_t k = j;
+        while (given_up[k].generation != t.generation && k > 0 && given_up[k - 1].id == g.id) --k;
+        if (given_up[k].generation != t.generation) continue;  // the live triangle was never given up
+        if (given_up[k].reason == reason_no_split)
+            ++report.left_no_split;
+        else
+            ++report.left_precision;
     }
 }
 

@@ -131,3 +131,51 @@ TEST_CASE("Table 1 shape: off-centres give no more triangles than circumcentres"
 }
 
 }  // namespace gpdr::refine::testing
+
+namespace gpdr::refine::testing {
+
+// count_left outside checked mode reads the small-angle marks classification
+// leaves and counts surviving give-ups instead of assessing every triangle
+// again; both ways must give the same counts (the refinement itself is the
+// same: checked mode only adds checks).
+TEST_CASE("the final count from classification's marks equals assessing every triangle again", "[refine][pslg]") {
+    struct Case {
+        const char* name;
+        triangulate::Pslg pslg;
+        double angle, area;
+        int no_segment_splitting;
+    };
+    const Case cases[] = {
+        {"a star of segments 3 degrees apart, q30", star(8, 3.0), 30, 0, 0},
+        {"two segments at 1 degree, q20 a0.01", star(2, 1.0), 20, 0.01, 0},
+        {"a star with -Y (give-ups)", star(8, 3.0), 30, 0.05, 1},
+        {"a square with a hole, q33 a0.001", square_with_hole(), 33, 0.001, 0},
+    };
+    for (const Case& c : cases) {
+        INFO(c.name);
+        RefineReport reports[2];
+        std::size_t triangles[2];
+        for (int checked = 0; checked < 2; ++checked) {
+            mesh::Mesh m = cdt(c.pslg);
+            RefineSettings settings;
+            settings.criteria.min_angle_degrees = c.angle;
+            settings.criteria.max_area = c.area;
+            settings.no_segment_splitting = c.no_segment_splitting;
+            settings.segment_ends = segment_ends(c.pslg);
+            settings.checked = checked == 1;
+            refine_mesh(m, settings, reports[checked]);
+            triangles[checked] = m.count_triangles();
+        }
+        CHECK(triangles[0] == triangles[1]);
+        CHECK(reports[0].left_small_input_angle == reports[1].left_small_input_angle);
+        CHECK(reports[0].left_no_split == reports[1].left_no_split);
+        CHECK(reports[0].left_precision == reports[1].left_precision);
+        CHECK(reports[0].left_budget == reports[1].left_budget);
+        CHECK(reports[0].left_other == reports[1].left_other);
+        CHECK(reports[0].encroached_left == reports[1].encroached_left);
+        if (c.angle >= 30 && c.no_segment_splitting == 0 && c.area == 0) CHECK(reports[0].left_small_input_angle > 0);
+        if (c.no_segment_splitting != 0) CHECK(reports[0].left_no_split + reports[0].encroached_left > 0);
+    }
+}
+
+}  // namespace gpdr::refine::testing

@@ -197,12 +197,13 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
                 const auto donor =
                     std::find_if(slots.begin(), slots.end(), [](const Slot& s) { return s.next.leaf != no_node; });
                 if (donor == slots.end()) break;
+                const auto awaits_completion = [&](int e) {
+                    return std::any_of(slot.finished.begin(), slot.finished.end(),
+                                       [&](const Finished& f) { return f.entry == e; });
+                };
                 int entry = static_cast<int>(2 * w);
-                for (const Finished& f : slot.finished)
-                    if (f.entry == entry) entry ^= 1;
-                if (std::any_of(slot.finished.begin(), slot.finished.end(),
-                                [&](const Finished& f) { return f.entry == entry; }))
-                    continue;  // both entries await completion
+                if (awaits_completion(entry)) entry ^= 1;
+                if (awaits_completion(entry)) continue;  // both do
                 scheduler.move_assignment(donor->next.entry, entry);
                 slot.current = {entry, donor->next.leaf};
                 donor->next = {};
@@ -220,48 +221,6 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
         for (auto& s : slots) s.cv.notify_one();
     }
     for (auto& t : pool) t.join();
-}
-
-// refine::count_left on `threads` threads, each over a slice of the triangle
-// slots: the final pass assesses every triangle (a user triunsuitable() too),
-// about a tenth of a one-thread refinement, which need not run on one thread.
-void count_left_parallel(const mesh::Mesh& mesh, const refine::RefineRun& run,
-                         std::vector<refine::LeafRefiner::GivenUp> given_up, refine::RefineReport& report,
-                         unsigned threads) {
-    refine::sort_given_up(given_up);
-    const bool full = refine::full_count_left(run, report);
-    const std::uint64_t end = mesh.triangle_end();
-    std::vector<refine::RefineReport> parts(threads);
-    std::vector<std::exception_ptr> failures(threads);
-    std::vector<std::thread> pool;
-    for (unsigned i = 0; i < threads; ++i) {
-        parts[i].stopped = report.stopped;
-        const auto first = static_cast<std::uint32_t>(end * i / threads);
-        const auto last = static_cast<std::uint32_t>(end * (i + 1) / threads);
-        auto count = [&, i, first, last] {
-            try {
-                refine::count_left_in(mesh, run, given_up, first, last, full, parts[i]);
-            } catch (...) {
-                failures[i] = std::current_exception();
-            }
-        };
-        if (threads == 1)
-            count();
-        else
-            pool.emplace_back(count);
-    }
-    for (auto& t : pool) t.join();
-    for (const auto& f : failures)
-        if (f) std::rethrow_exception(f);
-    for (const refine::RefineReport& p : parts) {
-        report.left_small_input_angle += p.left_small_input_angle;
-        report.left_no_split += p.left_no_split;
-        report.left_precision += p.left_precision;
-        report.left_budget += p.left_budget;
-        report.left_other += p.left_other;
-        report.encroached_left += p.encroached_left;
-    }
-    if (!full) refine::count_given_up(mesh, given_up, report);
 }
 
 }  // namespace
@@ -367,7 +326,7 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in
     tree.leaves(leaves);
     report.leaves = leaves.size();
     workers.clear();  // the pools give their spare slots back
-    count_left_parallel(mesh, run, std::move(given_up), report.refine, threads);
+    refine::count_left(mesh, run, std::move(given_up), report.refine, threads);
     labels.restore();
     report.master.managing += seconds(t_end, Clock::now());
 }

@@ -43,14 +43,6 @@ void Scheduler::offer(NodeId leaf) {
     queue_.push({k, leaf});
 }
 
-void Scheduler::push_into(NodeId leaf, const Routed& r) {
-    refine::Leaf& w = tree_.node(leaf).state->work;
-    if (r.is_triangle)
-        w.push_poor(r.triangle, w.sigma(r.radius_squared), r.rank);
-    else
-        w.push_subsegment(r.subsegment);
-}
-
 void Scheduler::deliver(const Routed& r) {
     const NodeId x = tree_.leaf_at(r.at);
     Info& i = info(x);
@@ -59,7 +51,7 @@ void Scheduler::deliver(const Routed& r) {
         i.inbox.push_back(r);  // its zone is being refined: later
         return;
     }
-    push_into(x, r);
+    push(tree_.node(x).state->work, r);
     offer(x);
 }
 
@@ -72,7 +64,7 @@ void Scheduler::flush_inbox(NodeId leaf) {
             info(x).inbox.push_back(r);
             continue;
         }
-        push_into(x, r);
+        push(tree_.node(x).state->work, r);
     }
 }
 

@@ -89,7 +89,6 @@ private:
     Info& info(NodeId id) { return tree_.node(id).state->master; }
     bool has_work(NodeId leaf) const;
     long key(NodeId leaf) const;
-    void push_into(NodeId leaf, const Routed& r);
     void flush_inbox(NodeId leaf);
     // Parks queue entry (k, x) with the assignment whose zone holds leaf z.
     void park(long k, NodeId x, NodeId z);

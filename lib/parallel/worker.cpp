@@ -93,27 +93,19 @@ void Worker::apply(CellRecord record, int delta, bool check_zone) {
         const std::uint32_t ix = x0 + (b & 1u), iy = y0 + (b >> 1);
         const std::uint64_t key = (std::uint64_t(level + 1) << 52) | (std::uint64_t(ix) << 26) | iy;
         CachedCell& cached = cache_[(key * 0x9E3779B97F4A7C15ull) >> 56];
-        if (cached.key == key && !(check_zone && options_.checked)) {
-            Node& n = tree_.node(cached.node);
-            if (n.get_kind() == NodeKind::internal) {
-                n.count.fetch_add(delta, std::memory_order_relaxed);
-                if (delta > 0) ++relation9_exceptions;
-            } else {
-                n.count.store(n.count.load(std::memory_order_relaxed) + delta, std::memory_order_relaxed);
+        NodeId id = cached.node, leaf = no_node;
+        if (cached.key != key || (check_zone && options_.checked)) {
+            // Start at the leaf being refined when the cell is inside it
+            // (the common case: no walk from the root).
+            NodeId start = Quadtree::root();
+            if (current_ != no_node) {
+                const Node& c = tree_.node(current_);
+                const int shift = level - c.level;
+                if (shift >= 0 && (ix >> shift) == c.ix && (iy >> shift) == c.iy) start = current_;
             }
-            continue;
+            id = tree_.cell(start, level, ix, iy, &nodes_, leaf);
+            cached = {key, id};
         }
-        // Start at the leaf being refined when the cell is inside it (the
-        // common case: no walk from the root).
-        NodeId start = Quadtree::root();
-        if (current_ != no_node) {
-            const Node& c = tree_.node(current_);
-            const int shift = level - c.level;
-            if (shift >= 0 && (ix >> shift) == c.ix && (iy >> shift) == c.iy) start = current_;
-        }
-        NodeId leaf = no_node;
-        const NodeId id = tree_.cell(start, level, ix, iy, &nodes_, leaf);
-        cached = {key, id};
         Node& n = tree_.node(id);
         if (n.get_kind() == NodeKind::internal) {
             // Above a leaf: relation (9) does not hold there (quadtree.hpp).
@@ -121,7 +113,8 @@ void Worker::apply(CellRecord record, int delta, bool check_zone) {
             if (delta > 0) ++relation9_exceptions;
         } else {
             n.count.store(n.count.load(std::memory_order_relaxed) + delta, std::memory_order_relaxed);
-            if (check_zone && options_.checked && leaf != no_node && tree_.node(leaf).owner.load(std::memory_order_relaxed) != tag_)
+            if (leaf != no_node && check_zone && options_.checked &&
+                tree_.node(leaf).owner.load(std::memory_order_relaxed) != tag_)
                 ++zone_escapes;
         }
     }
@@ -149,10 +142,7 @@ void Worker::uncount(mesh::TriangleId t) {
 
 void Worker::flush_pending() {
     for (const Pending& p : pending_) {
-        if (!p.live) continue;
-        const std::uint32_t i = mesh::index(p.t);
-        records_[i] = 0;
-        count(p.t, p.circumcircle);
+        if (p.live) count(p.t, p.circumcircle);
     }
     pending_.clear();
 }
@@ -197,12 +187,7 @@ void Worker::deliver(const Routed& r, NodeId splitting) {
     Node& n = tree_.node(x);
     if (n.get_kind() != NodeKind::internal && n.state != nullptr &&
         n.owner.load(std::memory_order_relaxed) == tag_) {
-        // A leaf of this worker's zone (Fig. 4 line 9).
-        refine::Leaf& w = n.state->work;
-        if (r.is_triangle)
-            w.push_poor(r.triangle, w.sigma(r.radius_squared), r.rank);
-        else
-            w.push_subsegment(r.subsegment);
+        push(n.state->work, r);  // a leaf of this worker's zone (Fig. 4 line 9)
         ++handed_off_local;
     } else {
         outbox.push_back(r);
@@ -247,7 +232,7 @@ void Worker::route_subsegment(refine::QueuedSubsegment s, NodeId splitting) {
 
 // ---- one leaf ----------------------------------------------------------------------
 
-bool Worker::split(NodeId leaf) {
+void Worker::split(NodeId leaf) {
     // Line 13: the children's counts are already exact (shadow nodes), and
     // the leaf's own count is 0, so (9) holds for each child.
     const OwnedBox s = tree_.node(leaf).state->box;
@@ -264,7 +249,6 @@ bool Worker::split(NodeId leaf) {
     }
     refine::QueuedSubsegment e;
     while (work.pop_subsegment(e)) route_subsegment(e, leaf);
-    return true;
 }
 
 // Whether the leaf should split now, before refining further: relation (9)
@@ -309,12 +293,13 @@ bool Worker::run(NodeId leaf, std::int32_t tag) {
     const auto t1 = Clock::now();
     times.refining += std::chrono::duration<double>(t1 - t0).count();
 
-    std::vector<refine::QueuedTriangle> triangles;
-    triangles.swap(state.work.handed_off_triangles);
-    for (const auto& q : triangles) route_triangle(q, true, state.box, no_node);
-    std::vector<refine::QueuedSubsegment> subsegments;
-    subsegments.swap(state.work.handed_off_subsegments);
-    for (const auto& s : subsegments) route_subsegment(s, no_node);
+    // (Swapped with the worker's emptied lists: no allocation per run.)
+    routing_triangles_.swap(state.work.handed_off_triangles);
+    for (const auto& q : routing_triangles_) route_triangle(q, true, state.box, no_node);
+    routing_triangles_.clear();
+    routing_subsegments_.swap(state.work.handed_off_subsegments);
+    for (const auto& s : routing_subsegments_) route_subsegment(s, no_node);
+    routing_subsegments_.clear();
     if (split_now) split(leaf);
     current_ = no_node;
     tag_ = 0;

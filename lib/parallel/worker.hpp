@@ -47,6 +47,15 @@ struct Routed {
     int rank = 0;             // triangles: shape rank
 };
 
+// Puts routed work into a leaf's lists (the worker for its own zone, the
+// master for the rest).
+inline void push(refine::Leaf& work, const Routed& r) {
+    if (r.is_triangle)
+        work.push_poor(r.triangle, work.sigma(r.radius_squared), r.rank);
+    else
+        work.push_subsegment(r.subsegment);
+}
+
 // The master's bookkeeping for a leaf (scheduler.hpp); no worker touches it.
 struct MasterInfo {
     bool held = false;  // in the zone of an assignment
@@ -130,7 +139,7 @@ private:
     void route_subsegment(refine::QueuedSubsegment s, NodeId splitting);
     void deliver(const Routed& r, NodeId splitting);
     bool should_split(const Node& n, LeafState& state);
-    bool split(NodeId leaf);
+    void split(NodeId leaf);
 
     mesh::Mesh& mesh_;
     refine::RefineRun& run_;
@@ -147,6 +156,8 @@ private:
         geometry::Circle circumcircle;
     };
     std::vector<Pending> pending_;
+    std::vector<refine::QueuedTriangle> routing_triangles_;
+    std::vector<refine::QueuedSubsegment> routing_subsegments_;
     NodeId current_ = no_node;
     std::int32_t tag_ = 0;  // the zone's Node::owner while a run goes on
     // Cells found lately: consecutive triangles mostly share cells, and a

@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <string>
+#include <thread>
 
 #include <gpdr/errors.hpp>
 
@@ -185,15 +187,11 @@ void LeafRefiner::classify_all(Leaf& leaf) {
 
 void LeafRefiner::classify_created(Leaf& leaf) {
     report_.triangles_created += buffer_.created.size();
-    if (observer_ == nullptr) {
-        for (TriangleId id : buffer_.created) classify(leaf, id);
-        return;
-    }
-    observer_->triangles_killed(buffer_.killed);
+    if (observer_ != nullptr) observer_->triangles_killed(buffer_.killed);
     for (TriangleId id : buffer_.created) {
         const mesh::Triangle& r = mesh_.triangle(id);
         const TriangleMeasures m = QualityTest::measure(mesh_.point(r.v[0]), mesh_.point(r.v[1]), mesh_.point(r.v[2]));
-        observer_->triangle_created(id, m.circle);
+        if (observer_ != nullptr) observer_->triangle_created(id, m.circle);
         classify(leaf, id, m);
     }
 }
@@ -460,23 +458,27 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q) {
     requeue_if_alive();  // p's cavity missed t (only through rounding): try again
 }
 
-void sort_given_up(std::vector<LeafRefiner::GivenUp>& given_up) {
-    std::stable_sort(given_up.begin(), given_up.end(),
-                     [](const auto& x, const auto& y) { return mesh::index(x.id) < mesh::index(y.id); });
+namespace {
+
+// The reason of the newest give-up of triangle (id, generation) in
+// `given_up` (sorted by slot, each slot's entries in the order given), or
+// 0xFF when it was never given up.
+std::uint8_t give_up_reason(std::span<const LeafRefiner::GivenUp> given_up, TriangleId id, std::uint32_t generation) {
+    auto it = std::upper_bound(given_up.begin(), given_up.end(), mesh::index(id),
+                               [](std::uint32_t x, const auto& g) { return x < mesh::index(g.id); });
+    while (it != given_up.begin()) {
+        --it;
+        if (it->id != id) break;
+        if (it->generation == generation) return it->reason;
+    }
+    return 0xFF;
 }
 
-void count_left(const mesh::Mesh& mesh, const RefineRun& run, std::vector<LeafRefiner::GivenUp> given_up,
-                RefineReport& report) {
-    sort_given_up(given_up);
-    const bool full = full_count_left(run, report);
-    count_left_in(mesh, run, given_up, 0, mesh.triangle_end(), full, report);
-    if (!full) count_given_up(mesh, given_up, report);
-}
-
-bool full_count_left(const RefineRun& run, const RefineReport& report) {
-    return run.settings().checked || report.stopped != RefineReport::Stop::none;
-}
-
+// The final pass over triangle slots [first, end).  FULL assesses every
+// triangle again, and so also finds what was left poor for no reason
+// (left_other) and what a limit left (left_budget); otherwise it reads the
+// small-angle mark classification left on each triangle, and the give-ups
+// are counted apart (count_given_up).
 void count_left_in(const mesh::Mesh& mesh, const RefineRun& run, std::span<const LeafRefiner::GivenUp> given_up,
                    std::uint32_t first, std::uint32_t end, bool full, RefineReport& report) {
     const QualityTest& quality = run.quality();
@@ -503,18 +505,7 @@ void count_left_in(const mesh::Mesh& mesh, const RefineRun& run, std::span<const
             report.left_small_input_angle += protected_angle ? 1 : 0;
             continue;
         }
-        // The last give-up recorded for this very triangle.
-        auto it = std::upper_bound(given_up.begin(), given_up.end(), i,
-                                   [](std::uint32_t x, const auto& g) { return x < mesh::index(g.id); });
-        std::uint8_t reason = 0xFF;
-        while (it != given_up.begin()) {
-            --it;
-            if (it->id != id) break;
-            if (it->generation == t.generation) {
-                reason = it->reason;
-                break;
-            }
-        }
+        const std::uint8_t reason = give_up_reason(given_up, id, t.generation);
         if (reason == reason_no_split)
             ++report.left_no_split;
         else if (reason == reason_precision)
@@ -526,24 +517,62 @@ void count_left_in(const mesh::Mesh& mesh, const RefineRun& run, std::span<const
     }
 }
 
+// Outside full counting: the give-ups whose triangles are still alive (a
+// triangle given up is poor, and stays so while it lives).
 void count_given_up(const mesh::Mesh& mesh, std::span<const LeafRefiner::GivenUp> given_up, RefineReport& report) {
-    // Entries are sorted by slot, in the order they were given up: the last
-    // entry of a slot whose generation is still the slot's names the reason.
     for (std::size_t j = 0; j < given_up.size(); ++j) {
-        const LeafRefiner::GivenUp& g = given_up[j];
-        if (j + 1 < given_up.size() && given_up[j + 1].id == g.id) continue;  // a later entry of the slot decides
-        const mesh::Triangle& t = mesh.triangle(g.id);
+        if (j + 1 < given_up.size() && given_up[j + 1].id == given_up[j].id) continue;  // once per slot
+        const mesh::Triangle& t = mesh.triangle(given_up[j].id);
         if (!t.live()) continue;
-        // The slot's last entry may be for an older triangle: look back for
-        // the newest entry of the live one.
-        std::size_t k = j;
-        while (given_up[k].generation != t.generation && k > 0 && given_up[k - 1].id == g.id) --k;
-        if (given_up[k].generation != t.generation) continue;  // the live triangle was never given up
-        if (given_up[k].reason == reason_no_split)
+        const std::uint8_t reason = give_up_reason(given_up.first(j + 1), given_up[j].id, t.generation);
+        if (reason == reason_no_split)
             ++report.left_no_split;
-        else
+        else if (reason == reason_precision)
             ++report.left_precision;
     }
+}
+
+}  // namespace
+
+void count_left(const mesh::Mesh& mesh, const RefineRun& run, std::vector<LeafRefiner::GivenUp> given_up,
+                RefineReport& report, unsigned threads) {
+    std::stable_sort(given_up.begin(), given_up.end(),
+                     [](const auto& x, const auto& y) { return mesh::index(x.id) < mesh::index(y.id); });
+    // Full counting in checked mode, and when a limit stopped the run.
+    const bool full = run.settings().checked || report.stopped != RefineReport::Stop::none;
+    threads = std::max(1u, threads);
+    const std::uint64_t end = mesh.triangle_end();
+    std::vector<RefineReport> parts(threads);
+    std::vector<std::exception_ptr> failures(threads);
+    std::vector<std::thread> pool;
+    for (unsigned i = 0; i < threads; ++i) {
+        parts[i].stopped = report.stopped;
+        const auto first = static_cast<std::uint32_t>(end * i / threads);
+        const auto last = static_cast<std::uint32_t>(end * (i + 1) / threads);
+        auto count = [&, i, first, last] {
+            try {
+                count_left_in(mesh, run, given_up, first, last, full, parts[i]);
+            } catch (...) {
+                failures[i] = std::current_exception();
+            }
+        };
+        if (threads == 1)
+            count();
+        else
+            pool.emplace_back(count);
+    }
+    for (auto& t : pool) t.join();
+    for (const auto& f : failures)
+        if (f) std::rethrow_exception(f);
+    for (const RefineReport& p : parts) {
+        report.left_small_input_angle += p.left_small_input_angle;
+        report.left_no_split += p.left_no_split;
+        report.left_precision += p.left_precision;
+        report.left_budget += p.left_budget;
+        report.left_other += p.left_other;
+        report.encroached_left += p.encroached_left;
+    }
+    if (!full) count_given_up(mesh, given_up, report);
 }
 
 // ---- the sequential driver ---------------------------------------------------

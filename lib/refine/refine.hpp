@@ -223,26 +223,14 @@ private:
 
 // The final pass of a run: counts the poor triangles left in `mesh` by
 // reason (the give-ups of all threads' refiners) and the encroached
-// subsegments left, into `report`.  Single-threaded.
+// subsegments left, into `report`, on `threads` threads, each over a slice
+// of the triangle slots.  In checked mode, and when a limit stopped the
+// run, it assesses every triangle again (and so also finds triangles left
+// poor for no reason: left_other); otherwise it reads the small-angle mark
+// classification left on each triangle and counts the give-ups whose
+// triangles still live, about a tenth of a one-thread refinement less.
 void count_left(const mesh::Mesh& mesh, const RefineRun& run, std::vector<LeafRefiner::GivenUp> given_up,
-                RefineReport& report);
-//
-// FULL counting assesses every triangle again (and so checks that nothing
-// poor was left for no reason: left_other).  It runs in checked mode and
-// after a limit stopped the run (left_budget needs it); otherwise the pass
-// reads the small-angle mark classification left on each triangle and
-// counts the give-ups whose triangles are still alive (count_given_up),
-// about a tenth of a one-thread refinement less.
-bool full_count_left(const RefineRun& run, const RefineReport& report);
-// The pass over triangle slots [first, end) only, adding to the counts of
-// `report` (whose `stopped` says whether a limit stopped the run);
-// `given_up` sorted by sort_given_up.  Without `full`, the give-ups are
-// left to count_given_up.  Several threads may count disjoint ranges at
-// once into their own reports.
-void count_left_in(const mesh::Mesh& mesh, const RefineRun& run, std::span<const LeafRefiner::GivenUp> given_up,
-                   std::uint32_t first, std::uint32_t end, bool full, RefineReport& report);
-void count_given_up(const mesh::Mesh& mesh, std::span<const LeafRefiner::GivenUp> given_up, RefineReport& report);
-void sort_given_up(std::vector<LeafRefiner::GivenUp>& given_up);
+                RefineReport& report, unsigned threads = 1);
 
 // The sequential refiner: one leaf that never splits, on the calling thread.
 // Requires a constrained Delaunay mesh without ghosts whose boundary edges

@@ -124,17 +124,7 @@ bool segment_of(const mesh::Mesh& mesh, mesh::TriangleId t, VertexId u, const Se
     }
     // Walk both ways along the chain (bounded: a very long chain just
     // leaves the triangle unprotected).
-    constexpr int limit = 256;
-    const VertexId forward = chain_end(mesh, e, u, x, limit);
-    if (forward == mesh::no_vertex) return false;
-    // The other way: the subsegment continuing x -> u beyond u.
-    EdgeRef back_edge = EdgeRef::none();
-    const VertexId back = continuation(mesh, t, x, u, back_edge);
-    if (back == mesh::no_vertex) return false;
-    const VertexId backward = chain_end(mesh, back_edge, u, back, limit);
-    if (backward == mesh::no_vertex) return false;
-    ends = {forward, backward};
-    return true;
+    return walk_segment_ends(mesh, e, ends);
 }
 
 }  // namespace

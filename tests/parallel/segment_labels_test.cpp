@@ -42,6 +42,8 @@ void check_labels(const mesh::Mesh& m, const SegmentLabels& labels) {
             CHECK(cross * cross <= 1e-20 * len2 * len2);
             CHECK(x.x >= std::min(p.x, q.x) - 1e-12);
             CHECK(x.x <= std::max(p.x, q.x) + 1e-12);
+            CHECK(x.y >= std::min(p.y, q.y) - 1e-12);
+            CHECK(x.y <= std::max(p.y, q.y) + 1e-12);
         }
     });
 }

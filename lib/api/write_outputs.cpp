@@ -1,6 +1,15 @@
-// The output stage: every file the switches ask for, written through one
-// output transaction so that a failure leaves no partial result and no
-// earlier result clobbered.
+// The output stage: every file the switches ask for, all or none, so that a
+// failure leaves no partial result and no earlier result clobbered.  With
+// several threads (-jN) the files are formatted and written side by side:
+// the .node and .ele files of a large mesh cost about the same, and
+// formatting numbers, like the kernel's copy of a write, runs on one core
+// per file.
+
+#include <atomic>
+#include <exception>
+#include <functional>
+#include <memory>
+#include <thread>
 
 #include <gpdr/io.hpp>
 
@@ -22,6 +31,43 @@ SegmentSet subsegments_of(const mesh::Mesh& mesh, const std::vector<std::uint32_
         segments.markers.push_back(marker(index(e.from), index(e.to), e.hull));
     });
     return segments;
+}
+
+// One output file: its name and the call that writes it into a transaction.
+struct FileJob {
+    std::string target;
+    std::function<void(io::OutputTransaction&)> write;
+};
+
+// Writes every job into a transaction of its own, on up to `threads`
+// threads (jobs are taken in order, so the first, largest files start
+// first), then renames all of them into place in job order, only when all
+// were written.  A failure rethrows the first failing job's error (in job
+// order, whatever the timing), and the transactions' destructors remove
+// every temporary file.
+void write_all(const std::vector<FileJob>& jobs, unsigned threads) {
+    const std::size_t n = jobs.size();
+    const auto transactions = std::make_unique<io::OutputTransaction[]>(n);
+    std::vector<std::exception_ptr> failures(n);
+    std::atomic<std::size_t> next{0};
+    const auto work = [&] {
+        for (std::size_t j; (j = next.fetch_add(1)) < n;) {
+            try {
+                jobs[j].write(transactions[j]);
+            } catch (...) {
+                failures[j] = std::current_exception();
+            }
+        }
+    };
+    const std::size_t helpers = std::min<std::size_t>(threads, n) > 1 ? std::min<std::size_t>(threads, n) - 1 : 0;
+    {
+        std::vector<std::jthread> pool;
+        for (std::size_t h = 0; h < helpers; ++h) pool.emplace_back(work);
+        work();
+    }
+    for (const std::exception_ptr& f : failures)
+        if (f) std::rethrow_exception(f);
+    for (std::size_t j = 0; j < n; ++j) transactions[j].commit();
 }
 
 }  // namespace
@@ -54,33 +100,56 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
     const std::uint64_t edge_count = o.write_off ? count_edges(arrays).edges : 0;
     if (o.order == 2) make_second_order(arrays, marker);
 
-    io::OutputTransaction out;
-    if (!o.no_node_output) io::write_node(out, names.out_node, arrays.nodes, format);
-    if (!o.no_ele_output) io::write_ele(out, names.out_ele, triangle_source(arrays), format);
+    // Each job keeps what it needs by value or refers to data that stays
+    // put until write_all returns; all of it is only read.
+    std::vector<FileJob> jobs;
+    const auto add = [&](const std::string& target, std::function<void(io::OutputTransaction&)> write) {
+        jobs.push_back({target, std::move(write)});
+    };
+    if (!o.no_node_output)
+        add(names.out_node, [&](io::OutputTransaction& out) { io::write_node(out, names.out_node, arrays.nodes, format); });
+    if (!o.no_ele_output)
+        add(names.out_ele,
+            [&](io::OutputTransaction& out) { io::write_ele(out, names.out_ele, triangle_source(arrays), format); });
     if (want_poly) {
-        PolyFile poly;
-        poly.nodes_from_node_file = true;  // Triangle's output .poly refers to the .node
-        poly.nodes.attribute_count = arrays.nodes.attribute_count;
-        // write_poly() takes the header's marker column from nodes.markers.
-        if (arrays.nodes.has_markers()) poly.nodes.markers.assign(1, 0);
-        poly.segments = subsegments_of(mesh, number, mesh_marker);
-        if (request.poly) {
-            poly.holes = request.poly->holes;
-            poly.regions = request.poly->regions;
-        }
-        io::write_poly(out, names.out_poly, poly, format);
+        add(names.out_poly, [&](io::OutputTransaction& out) {
+            PolyFile poly;
+            poly.nodes_from_node_file = true;  // Triangle's output .poly refers to the .node
+            poly.nodes.attribute_count = arrays.nodes.attribute_count;
+            // write_poly() takes the header's marker column from nodes.markers.
+            if (arrays.nodes.has_markers()) poly.nodes.markers.assign(1, 0);
+            poly.segments = subsegments_of(mesh, number, mesh_marker);
+            if (request.poly) {
+                poly.holes = request.poly->holes;
+                poly.regions = request.poly->regions;
+            }
+            io::write_poly(out, names.out_poly, poly, format);
+        });
     }
-    if (o.write_edges) io::write_edge(out, names.out_edge, edges, format);
+    if (o.write_edges)
+        add(names.out_edge, [&](io::OutputTransaction& out) { io::write_edge(out, names.out_edge, edges, format); });
     if (o.write_voronoi) {
         io::WriteFormat plain = format;
         plain.markers = false;
-        io::write_node(out, names.out_v_node, voronoi.vertices, plain);
-        io::write_voronoi_edge(out, names.out_v_edge, voronoi.edges, plain);
+        add(names.out_v_node, [&voronoi, &names, plain](io::OutputTransaction& out) {
+            io::write_node(out, names.out_v_node, voronoi.vertices, plain);
+        });
+        add(names.out_v_edge, [&voronoi, &names, plain](io::OutputTransaction& out) {
+            io::write_voronoi_edge(out, names.out_v_edge, voronoi.edges, plain);
+        });
     }
-    if (o.write_neighbours) io::write_neigh(out, names.out_neigh, arrays.neighbours, format);
-    if (o.write_off) io::write_off(out, names.out_off, arrays.nodes, arrays.triangles, edge_count, format);
-    out.commit();
-    return out.files();
+    if (o.write_neighbours)
+        add(names.out_neigh,
+            [&](io::OutputTransaction& out) { io::write_neigh(out, names.out_neigh, arrays.neighbours, format); });
+    if (o.write_off)
+        add(names.out_off, [&](io::OutputTransaction& out) {
+            io::write_off(out, names.out_off, arrays.nodes, arrays.triangles, edge_count, format);
+        });
+    const unsigned threads = o.threads != 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
+    write_all(jobs, threads);
+    std::vector<std::string> written;
+    for (const FileJob& j : jobs) written.push_back(j.target);
+    return written;
 }
 
 }  // namespace gpdr::api

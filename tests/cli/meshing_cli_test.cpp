@@ -141,6 +141,33 @@ TEST_CASE("switch -c, -e, -n, -v, -o2 and -j write what Triangle writes", "[cli]
     CHECK(MeshFiles::read(dir, "d.1").nodes.size() == 3);
 }
 
+TEST_CASE("with several threads the output files are written side by side, the same as one thread writes",
+          "[cli][outputs][parallel]") {
+    // No refinement, so the mesh is the same for any thread count; only the
+    // files' last line (the command) differs.
+    TempDir dir;
+    dir.write("p.node", sample_text("points.node"));
+    const std::vector<std::string> names{"p.1.node", "p.1.ele",    "p.1.poly",   "p.1.edge",
+                                         "p.1.neigh", "p.1.v.node", "p.1.v.edge"};
+    const auto without_last_line = [](std::string s) {
+        s.pop_back();
+        return s.substr(0, s.rfind('\n') + 1);
+    };
+    std::vector<std::string> one_thread;
+    const auto r1 = run_gpdr(dir, "-cenv -j1 p.node");
+    REQUIRE(r1.status == 0);
+    for (const auto& n : names) one_thread.push_back(without_last_line(dir.read(n)));
+    const auto r4 = run_gpdr(dir, "-cenv -j4 p.node");
+    REQUIRE(r4.status == 0);
+    // The same files, announced in the same order.
+    CHECK(r4.out == r1.out);
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        INFO(names[i]);
+        CHECK(without_last_line(dir.read(names[i])) == one_thread[i]);
+    }
+    CHECK(dir.files().size() == names.size() + 1);  // no temporary file left behind
+}
+
 namespace {
 
 // Every switch combination of issue 4 (-c, -D, -O, -A) and two refinements,

@@ -48,6 +48,12 @@ bench_run() {
   local label=$1 program=$2 switches=$3 input=$4
   shift 4
   local log="$BENCH_DIR/run.log" tlog="$BENCH_DIR/time.log"
+  # Every program starts alike: no earlier result to replace (freeing a
+  # gigabyte of page cache at the rename would count as its output time)
+  # and no write-back of the previous run's files going on.
+  local stem="${input%.*}"
+  rm -f "$stem".1.*
+  sync
   ( cd "$(dirname "$input")" && /usr/bin/time -f "%e %M" -o "$tlog" "$program" "-V$switches" "$@" "$(basename "$input")" >"$log" 2>&1 ) || {
     echo "| $(basename "$input") | $label | -$switches | failed: $(tail -1 "$log") |"; return; }
   local wall peak

@@ -10,11 +10,13 @@
 #include <functional>
 #include <memory>
 #include <thread>
+#include <vector>
 
 #include <gpdr/io.hpp>
 
 #include "api/job_stages.hpp"
 #include "mesh/traverse.hpp"
+#include "parallel/refine_parallel.hpp"
 
 namespace gpdr::api {
 namespace {
@@ -59,10 +61,10 @@ void write_all(const std::vector<FileJob>& jobs, unsigned threads) {
             }
         }
     };
-    const std::size_t helpers = std::min<std::size_t>(threads, n) > 1 ? std::min<std::size_t>(threads, n) - 1 : 0;
     {
-        std::vector<std::jthread> pool;
-        for (std::size_t h = 0; h < helpers; ++h) pool.emplace_back(work);
+        // This thread and up to threads - 1 helpers, no more than there are files.
+        std::vector<std::jthread> helpers;
+        for (std::size_t h = 1; h < std::min<std::size_t>(threads, n); ++h) helpers.emplace_back(work);
         work();
     }
     for (const std::exception_ptr& f : failures)
@@ -145,8 +147,7 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
         add(names.out_off, [&](io::OutputTransaction& out) {
             io::write_off(out, names.out_off, arrays.nodes, arrays.triangles, edge_count, format);
         });
-    const unsigned threads = o.threads != 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
-    write_all(jobs, threads);
+    write_all(jobs, parallel::thread_count(o.threads));
     std::vector<std::string> written;
     for (const FileJob& j : jobs) written.push_back(j.target);
     return written;

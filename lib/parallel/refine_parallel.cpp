@@ -227,7 +227,7 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
 
 void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in, const ParallelOptions& options,
                      ParallelReport& report) {
-    unsigned threads = options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+    const unsigned threads = thread_count(options.threads);
     const unsigned granularity = options.granularity != 0 ? options.granularity : default_granularity;
     report.threads = threads;
     report.granularity = granularity;

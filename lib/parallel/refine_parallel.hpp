@@ -21,7 +21,9 @@
 // sequential refiner's single leaf that never splits (refine::refine_mesh).
 
 #include <cstdint>
+#include <algorithm>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "mesh/mesh.hpp"
@@ -59,8 +61,14 @@ struct ParallelReport {
     std::uint64_t checks = 0;  // quadtree verifications run (checked mode)
 };
 
+// The threads a -jN asks for: N, or for 0 one per hardware thread (at
+// least one).  Refinement and the output stage both use it.
+inline unsigned thread_count(unsigned requested) {
+    return requested != 0 ? requested : std::max(1u, std::thread::hardware_concurrency());
+}
+
 struct ParallelOptions {
-    unsigned threads = 0;      // 0: std::thread::hardware_concurrency()
+    unsigned threads = 0;      // 0: thread_count(0)
     unsigned granularity = 0;  // 0: default_granularity
     // Verify the quadtree (relation (9) for every leaf, exact counters,
     // leaves tiling the root) after every leaf refinement (the master waits

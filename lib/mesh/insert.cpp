@@ -74,6 +74,14 @@ std::size_t find_cavity(Mesh& mesh, const Point& p, TriangleId seed, InsertBuffe
     return boundary_edges;
 }
 
+void save_tags_and_destroy(Pool& pool, InsertBuffer& buf) {
+    buf.killed_tags.resize(buf.killed.size());
+    for (std::size_t i = 0; i < buf.killed.size(); ++i) {
+        buf.killed_tags[i] = pool.mesh().triangle(buf.killed[i]).user_tag;
+        pool.destroy(buf.killed[i]);
+    }
+}
+
 void abandon_cavity(Mesh& mesh, InsertBuffer& buf) {
     clear_marks(mesh, buf.killed);
     buf.killed.clear();
@@ -137,7 +145,7 @@ InsertResult commit_cavity(Pool& pool, VertexId v, const LocateResult& where, In
     // Step 4b: kill the cavity, then fan the boundary from v.  Slots freed
     // here are the first the pool hands out again.
     const std::uint16_t region = mesh.triangle(seed).region;
-    for (TriangleId id : cavity) pool.destroy(id);
+    save_tags_and_destroy(pool, buf);
 
     const std::size_t m = boundary.size();
     const bool open = !skip.is_none();

@@ -58,6 +58,9 @@ struct InsertBuffer {
     // ... and the triangles that died.  Their slots may already be reused in
     // `created`, under a new generation.
     std::vector<TriangleId> killed;
+    // The user_tag of each triangle in `killed`, saved before its slot could
+    // be reused.
+    std::vector<std::uint8_t> killed_tags;
     // State of the walk's random generator (per thread, reproducible).
     std::uint32_t random_state = 0x2545F491u;
 
@@ -98,6 +101,10 @@ InsertResult insert_located(Pool& pool, VertexId v, const LocateResult& where, I
 std::size_t find_cavity(Mesh& mesh, const Point& p, TriangleId seed, InsertBuffer& buffer);
 void abandon_cavity(Mesh& mesh, InsertBuffer& buffer);
 InsertResult commit_cavity(Pool& pool, VertexId v, const LocateResult& where, InsertBuffer& buffer);
+
+// Kills every triangle of buffer.killed, saving their user tags in
+// buffer.killed_tags first (the last step before a cavity is refilled).
+void save_tags_and_destroy(Pool& pool, InsertBuffer& buffer);
 
 // Whether p lies strictly inside the circumcircle of live triangle t (for a
 // ghost triangle: strictly beyond its edge, or inside the open edge).

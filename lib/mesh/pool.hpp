@@ -48,7 +48,7 @@ public:
         r.n[0] = r.n[1] = r.n[2] = EdgeRef::none();
         r.region = 0;
         r.flags = Triangle::live_bit;
-        r.spare = 0;
+        r.user_tag = 0;
         return t;
     }
 

@@ -217,7 +217,7 @@ InsertResult split_subsegment(Pool& pool, EdgeRef s, const Point& asked, VertexK
     if (const SubsegmentInfo* found = mesh.subsegments().find(x, y)) info = *found;
     const VertexId v = pool.new_vertex(p, kind);
 
-    for (TriangleId id : buf.killed) pool.destroy(id);
+    save_tags_and_destroy(pool, buf);
     buf.created.clear();
     bool other_side = false;
     TriangleId previous = no_triangle;

@@ -43,7 +43,10 @@ struct Triangle {
     // the CDT later; 0 means "no region".
     std::uint16_t region;
     std::uint8_t flags;
-    std::uint8_t spare;
+    // A byte for the layers above the mesh (the parallel refiner keeps how
+    // the triangle is counted in it): 0 in a new triangle, kept by flips,
+    // and saved in InsertBuffer::killed_tags when the triangle dies.
+    std::uint8_t user_tag;
 
     bool live() const { return (flags & live_bit) != 0; }
     // The generation, read and bumped as a relaxed atomic (a plain move on

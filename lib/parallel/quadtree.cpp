@@ -18,22 +18,30 @@ double squared_distance(const Square& a, const Square& b) {
 
 
 Quadtree::Quadtree(double x0, double y0, double side)
-    : x0_(x0), y0_(y0), side_(side), shrunk_side_squared_over_16_(side * side / 16 * (1 - 0x1p-30)) {
+    : x0_(x0),
+      y0_(y0),
+      side_(side),
+      shrunk_side_squared_over_16_(side * side / 16 * (1 - 0x1p-30)),
+      rounding_margin_(0x1p-40 * (std::abs(x0) + std::abs(y0) + 4 * side)) {
     for (int k = 0; k <= max_level + 1; ++k) {
         sides_[k] = std::ldexp(side, -k);
         inverse_sides_[k] = 1.0 / sides_[k];
     }
+    // level_of reads k off the exponent of q = ℓ_root²(1 - 2^-30)/16r².  A
+    // radius² below S / 4^(m+2) by a relative 2^-40 (far beyond the
+    // division's rounding) gives q >= 4^(m+2), so k >= m + 2; one above
+    // S / 4^(max_level+1) by as much gives q < 4^(max_level+1), so k <=
+    // max_level.  (For m + 2 > max_level no triangle qualifies: limit 0.)
+    const double s = shrunk_side_squared_over_16_;
+    for (int m = 0; m <= max_level; ++m)
+        deferrable_below_[m] = m + 2 <= max_level ? std::ldexp(s, -2 * (m + 2)) * (1 - 0x1p-40) : 0.0;
+    smallest_counted_ = std::ldexp(s, -2 * (max_level + 1)) * (1 + 0x1p-40);
     NodeAllocator a;
     const NodeId root = allocate(a);
     Node& n = node(root);
     n.kind.store(static_cast<std::uint8_t>(NodeKind::leaf), std::memory_order_release);
     // The rest of the block is left unused (ids are cheap).
 }
-
-
-
-
-
 
 NodeId Quadtree::allocate(NodeAllocator& alloc) {
     if (alloc.next == alloc.end) {

@@ -18,7 +18,12 @@
 //     every triangle meeting a child has r < ℓ(L)/8 = ℓ(child)/4.
 //   - Cells below leaves are materialised as SHADOW nodes when a triangle is
 //     counted there, so a child's count is exact the moment it becomes a
-//     leaf (no rescan of the mesh on a split).
+//     leaf (no rescan of the mesh on a split).  Only counts at most one
+//     level below a leaf are ever read before the leaf splits, so a triangle
+//     two or more levels below the leaf that holds it is not counted yet but
+//     listed in that leaf, and counted when splits bring a leaf within one
+//     level of it (Worker::flush_pending); most of the final mesh is never
+//     counted.
 //   - A triangle counted in an INTERNAL node breaks (9) for the leaves under
 //     it (a Bowyer-Watson triangle can be larger than the cavity it came
 //     from when the new vertex is nearly on a cavity edge).  Such counts are
@@ -146,6 +151,32 @@ public:
     // The leaf whose square holds p (p clamped into the root).
     NodeId leaf_at(const Point& p) const;
 
+    // Whether a triangle of circumradius² radius_squared is at least two
+    // levels below a leaf of level leaf_level (level_of(radius_squared) >=
+    // leaf_level + 2) and not too small to be counted at all (<= max_level);
+    // conservative near the limits.  Two comparisons, no division: it is
+    // asked of every triangle a worker creates.
+    bool two_levels_below(double radius_squared, int leaf_level) const {
+        return radius_squared <= deferrable_below_[leaf_level] && radius_squared >= smallest_counted_;
+    }
+
+    // Whether the closed disk (centre c, radius² radius_squared) lies inside
+    // square s with room to spare: then every cell, at any level, that the
+    // counters would give the disk (cell_record) lies inside s, whatever the
+    // rounding of its cell coordinates.  Conservative: a disk that only
+    // just fits is reported as not inside.  (No square root: the margin is
+    // taken off the distances to the sides, which are then compared
+    // squared.)
+    bool disk_inside(const Square& s, const Point& c, double radius_squared) const {
+        const double gaps[4] = {c.x - s.x0, s.x0 + s.side - c.x, c.y - s.y0, s.y0 + s.side - c.y};
+        const double rr = radius_squared * (1.0 + 0x1p-40);
+        for (double gap : gaps) {
+            const double room = gap - rounding_margin_;
+            if (!(room > 0) || !(room * room > rr)) return false;
+        }
+        return true;
+    }
+
     // ℓe(leaf) (see above).
     double effective_side(NodeId leaf) const;
     // BUF(leaf) ∪ {leaf}: the leaves L' with dist(leaf, L') < (ℓe(leaf) + ℓe(L'))/2.
@@ -192,6 +223,11 @@ private:
 
     double x0_, y0_, side_;
     double shrunk_side_squared_over_16_;  // ℓ_root² / 16 (1 - 2^-30)
+    double deferrable_below_[max_level + 1];  // two_levels_below's limits
+    double smallest_counted_;
+    // Far above the rounding error of a cell coordinate (cell_x of a disk's
+    // extreme x or y, computed from coordinates of the root's magnitude).
+    double rounding_margin_;
     double sides_[max_level + 2];      // ℓ_k
     double inverse_sides_[max_level + 2];  // 1 / ℓ_k
     mutable mesh::ChunkTable<Node, 12, (1u << 20)> nodes_;

@@ -262,10 +262,11 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in
         // Everything lies in the root; anything handed off (a centre on the
         // root's far edge) stays with it.
         refine::Leaf& w = root_node.state->work;
-        for (const auto& q : w.handed_off_triangles) {
+        for (auto q : w.handed_off_triangles) {
             const mesh::Triangle& t = mesh.triangle(q.id);
             const refine::TriangleMeasures m =
                 refine::QualityTest::measure(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]));
+            q.where = w.where(m.circle.centre);
             w.push_poor(q, w.sigma(m.circle.radius_squared),
                         run.quality().shape_rank(m.shortest.length_squared, m.circle.radius_squared,
                                                  refine::Leaf::rank_count));

@@ -196,13 +196,40 @@ void verify_quadtree(const mesh::Mesh& mesh, Quadtree& tree, const CellRecords& 
     std::unordered_map<NodeId, std::int32_t> expected;
     bool outgrew = false;
     std::vector<NodeId> stack;
+    std::vector<NodeId> leaves;
+    tree.leaves(leaves);
+    // The live entries of the deferred lists: slot -> leaf.
+    std::unordered_map<std::uint32_t, NodeId> deferred_in;
+    for (NodeId l : leaves) {
+        if (tree.node(l).state == nullptr) continue;
+        tree.node(l).state->deferred.for_each([&](const DeferredTriangle& e) {
+            if (mesh.triangle(e.t).load_generation() != e.generation) return;
+            if (!deferred_in.emplace(mesh::index(e.t), l).second)
+                problem(fmt::format("triangle {} is deferred twice", mesh::index(e.t)));
+        });
+    }
     mesh::for_each_triangle(mesh, [&](mesh::TriangleId id, const mesh::Triangle& t) {
         const geometry::Circle c = geometry::circumcircle(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]));
         const CellRecord record = cell_record(tree, c.centre, c.radius_squared, outgrew);
         const std::uint32_t i = mesh::index(id);
-        const CellRecord stored = records.has_chunk(i >> 16) ? records[i] : 0;
-        if (record != stored) problem(fmt::format("triangle {}: counter record {:x}, expected {:x}", i, stored, record));
-        if (record != 0) {
+        const bool counted = t.user_tag == counted_tag;
+        const auto listed = deferred_in.find(i);
+        if (listed != deferred_in.end()) {
+            // Deferred (Worker::flush_pending): not counted, listed in a leaf
+            // that holds it with room to spare, two or more levels above it.
+            const NodeId l = listed->second;
+            const int k = tree.level_of(c.radius_squared);
+            if (counted || record == 0 || k < tree.node(l).level + 2 ||
+                !tree.disk_inside(tree.square(l), c.centre, c.radius_squared))
+                problem(fmt::format("triangle {} (level {}, tag {}) is deferred in leaf {} of level {}", i, k,
+                                    int(t.user_tag), l, int(tree.node(l).level)));
+        } else if (!counted) {
+            if (record != 0) problem(fmt::format("triangle {} is neither counted nor deferred", i));
+        } else if (!records.has_chunk(i >> 16) || records[i] != record) {
+            problem(fmt::format("triangle {}: counter record {:x}, expected {:x}", i,
+                                records.has_chunk(i >> 16) ? records[i] : 0, record));
+        }
+        if (counted && record != 0) {
             const int level = int((record >> 56) & 63u);
             const unsigned mask = unsigned((record >> 52) & 15u);
             const auto x0 = std::uint32_t((record >> 26) & ((1u << 26) - 1)), y0 = std::uint32_t(record & ((1u << 26) - 1));
@@ -238,8 +265,6 @@ void verify_quadtree(const mesh::Mesh& mesh, Quadtree& tree, const CellRecords& 
         const std::int32_t have = tree.node(n).count.load(std::memory_order_relaxed);
         if (want != have) problem(fmt::format("quadtree node {}: count {}, expected {}", n, have, want));
     }
-    std::vector<NodeId> leaves;
-    tree.leaves(leaves);
     double area = 0;
     for (NodeId l : leaves) {
         const Square s = tree.square(l);

@@ -3,6 +3,7 @@
 
 #include "parallel/worker.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -78,7 +79,7 @@ OwnedBox owned_box(const Quadtree& tree, NodeId leaf) {
 }
 
 LeafState* Worker::new_leaf_state(NodeId leaf) {
-    return &leaf_states_.emplace_back(tree_.side_at(tree_.node(leaf).level), owned_box(tree_, leaf));
+    return &leaf_states_.emplace_back(tree_.square(leaf), owned_box(tree_, leaf));
 }
 
 // ---- counters ------------------------------------------------------------------
@@ -122,29 +123,76 @@ void Worker::apply(CellRecord record, int delta, bool check_zone) {
 
 void Worker::count(mesh::TriangleId t, const geometry::Circle& c) {
     const CellRecord record = cell_record(tree_, c.centre, c.radius_squared, outgrew_root);
+    mesh::Triangle& r = mesh_.triangle(t);
+    if (record == 0) {
+        r.user_tag = 0;
+        return;
+    }
     const std::uint32_t i = mesh::index(t);
     records_.ensure(i >> 16, true);  // (read before written: see ChunkTable::ensure)
     records_[i] = record;
-    if (record != 0) apply(record, +1, current_ != no_node);
+    r.user_tag = counted_tag;
+    apply(record, +1, current_ != no_node);
 }
 
-void Worker::uncount(mesh::TriangleId t) {
-    const std::uint32_t i = mesh::index(t);
-    if (!records_.has_chunk(i >> 16)) return;
-    const CellRecord record = records_[i];
-    if (record == 0) return;
-    records_[i] = 0;
-    if (record & counted_bit)
-        apply(record, -1, false);
-    else
-        pending_[record & ~pending_bit].live = false;  // created and killed in one level: never counted
-}
+void Worker::uncount(mesh::TriangleId t) { apply(records_[mesh::index(t)], -1, false); }
 
 void Worker::flush_pending() {
+    if (pending_.empty()) return;
+    LeafState& leaf = *tree_.node(current_).state;  // (pending only while a run goes on)
     for (const Pending& p : pending_) {
-        if (p.live) count(p.t, p.circumcircle);
+        const mesh::Triangle& r = mesh_.triangle(p.t);
+        // Created and killed (or changed by a flip) in this run: never counted.
+        if (r.load_generation() != p.generation) continue;
+        if (p.deferrable)
+            defer({p.t, p.generation}, leaf);
+        else
+            count(p.t, geometry::circumcircle(mesh_.point(r.v[0]), mesh_.point(r.v[1]), mesh_.point(r.v[2])));
     }
     pending_.clear();
+}
+
+bool Worker::may_defer(const geometry::Circle& c, int leaf_level, const Square& leaf_square) const {
+    return tree_.two_levels_below(c.radius_squared, leaf_level) &&
+           tree_.disk_inside(leaf_square, c.centre, c.radius_squared);
+}
+
+void Worker::count_or_defer(DeferredTriangle e, const geometry::Circle& c, int leaf_level, const Square& leaf_square,
+                            LeafState& leaf) {
+    if (may_defer(c, leaf_level, leaf_square))
+        defer(e, leaf);
+    else
+        count(e.t, c);
+}
+
+void Worker::defer(DeferredTriangle e, LeafState& leaf) {
+    // (Its tag is 0 already: new, or listed in the parent.)
+    leaf.deferred.push(e, deferred_blocks_);
+    if (leaf.deferred.size() >= leaf.deferred_sweep_at) {
+        leaf.deferred.sweep(
+            [&](const DeferredTriangle& e) { return mesh_.triangle(e.t).load_generation() == e.generation; },
+            deferred_blocks_);
+        leaf.deferred_sweep_at = std::max<std::size_t>(4 * DeferredBlock::capacity, 2 * leaf.deferred.size());
+    }
+}
+
+// Line 13's upkeep of the deferred lists: each live triangle of the leaf's
+// list goes to the child whose square holds it, or is counted now.
+void Worker::hand_down_deferred(NodeId leaf) {
+    const Node& n = tree_.node(leaf);
+    Square squares[4];
+    for (int q = 0; q < 4; ++q) squares[q] = tree_.square(n.child(q));
+    const Point middle{squares[3].x0, squares[3].y0};
+    n.state->deferred.drain(
+        [&](const DeferredTriangle& e) {
+            const mesh::Triangle& r = mesh_.triangle(e.t);
+            if (r.load_generation() != e.generation) return;
+            const geometry::Circle c =
+                geometry::circumcircle(mesh_.point(r.v[0]), mesh_.point(r.v[1]), mesh_.point(r.v[2]));
+            const int q = (c.centre.x >= middle.x ? 1 : 0) | (c.centre.y >= middle.y ? 2 : 0);
+            count_or_defer(e, c, n.level + 1, squares[q], *tree_.node(n.child(q)).state);
+        },
+        deferred_blocks_);
 }
 
 void Worker::count_all() {
@@ -154,22 +202,28 @@ void Worker::count_all() {
 }
 
 // Killed first: their slots may be reused by the created triangles that
-// follow.  A created triangle drops whatever its slot still counted (a
-// triangle a flip changed in place) and is counted afresh.
-void Worker::triangles_killed(std::span<const mesh::TriangleId> killed) {
-    for (mesh::TriangleId t : killed) uncount(t);
+// follow, so whether each was counted comes from the tag saved at its death
+// (a pending or deferred triangle needs nothing: its entry goes stale with
+// the slot's generation).  A created triangle that a flip changed in place
+// drops what it counted and is counted afresh.
+void Worker::triangles_killed(std::span<const mesh::TriangleId> killed, std::span<const std::uint8_t> tags) {
+    for (std::size_t i = 0; i < killed.size(); ++i)
+        if (tags[i] == counted_tag) uncount(killed[i]);
 }
 
 void Worker::triangle_created(mesh::TriangleId t, const geometry::Circle& circumcircle) {
-    uncount(t);
+    mesh::Triangle& r = mesh_.triangle(t);
+    if (r.user_tag == counted_tag) {
+        uncount(t);
+        r.user_tag = 0;
+    }
     if (current_ == no_node) {
         count(t, circumcircle);
         return;
     }
-    const std::uint32_t i = mesh::index(t);
-    records_.ensure(i >> 16, true);  // (read before written: see ChunkTable::ensure)
-    records_[i] = pending_bit | pending_.size();
-    pending_.push_back({t, true, circumcircle});
+    // Whether it may be deferred is decided now, while the circle is at
+    // hand (the leaf stays the same until the flush).
+    pending_.push_back({t, r.generation, may_defer(circumcircle, tree_.node(current_).level, current_square_)});
 }
 
 // ---- routing ---------------------------------------------------------------------
@@ -242,10 +296,27 @@ void Worker::split(NodeId leaf) {
         n.state = new_leaf_state(c);
         n.owner.store(tag_, std::memory_order_relaxed);
     }
+    hand_down_deferred(leaf);
+    // The poor triangles go to the child their `where` names, one σ level
+    // down (the side halves; σ is clamped at both ends, see leaf.hpp) with
+    // the same shape rank, in the order they would be refined; the mesh is
+    // not looked at (stale entries go along and are skipped when popped).
+    // Only an entry whose `where` is used up is measured and routed afresh.
     refine::Leaf& work = tree_.node(leaf).state->work;
+    const Node& n = tree_.node(leaf);
     for (int j = work.lowest_level(); j >= 0 && j < refine::Leaf::bucket_count; ++j) {
+        const int child_level = j == 0 || j == refine::Leaf::bucket_count - 1 ? j : j - 1;
         refine::QueuedTriangle q;
-        while (work.pop_poor(j, q)) route_triangle(q, false, s, leaf);
+        int rank = 0;
+        while (work.pop_poor(j, q, &rank)) {
+            if ((q.where & 15u) == 0) {
+                route_triangle(q, false, s, leaf);
+                continue;
+            }
+            const int quadrant = refine::Leaf::first_quadrant(q.where);
+            q.where = refine::Leaf::in_child(q.where);
+            tree_.node(n.child(quadrant)).state->work.push_poor(q, child_level, rank);
+        }
     }
     refine::QueuedSubsegment e;
     while (work.pop_subsegment(e)) route_subsegment(e, leaf);
@@ -270,6 +341,7 @@ bool Worker::should_split(const Node& n, LeafState& state) {
 bool Worker::run(NodeId leaf, std::int32_t tag) {
     const auto t0 = Clock::now();
     current_ = leaf;
+    current_square_ = tree_.square(leaf);
     tag_ = tag;
     Node& n = tree_.node(leaf);
     LeafState& state = *n.state;

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "mesh/pool.hpp"
+#include "parallel/deferred_list.hpp"
 #include "parallel/quadtree.hpp"
 #include "parallel/refine_parallel.hpp"
 #include "refine/refine.hpp"
@@ -50,10 +51,13 @@ struct Routed {
 // Puts routed work into a leaf's lists (the worker for its own zone, the
 // master for the rest).
 inline void push(refine::Leaf& work, const Routed& r) {
-    if (r.is_triangle)
-        work.push_poor(r.triangle, work.sigma(r.radius_squared), r.rank);
-    else
+    if (r.is_triangle) {
+        refine::QueuedTriangle q = r.triangle;
+        q.where = work.where(r.at);
+        work.push_poor(q, work.sigma(r.radius_squared), r.rank);
+    } else {
         work.push_subsegment(r.subsegment);
+    }
 }
 
 // The master's bookkeeping for a leaf (scheduler.hpp); no worker touches it.
@@ -70,22 +74,33 @@ struct MasterInfo {
 // Everything a leaf has beyond its quadtree node (Node::state); made by the
 // worker that splits its parent.
 struct LeafState {
-    LeafState(double side, const OwnedBox& b) : work(side), box(b) { work.set_owner(&owns, this); }
+    LeafState(const Square& square, const OwnedBox& b) : work(square.side), box(b) {
+        work.set_owner(&owns, this);
+        work.set_corner({square.x0, square.y0});
+    }
     static bool owns(const void* self, const Point& p) { return static_cast<const LeafState*>(self)->box.contains(p); }
 
     refine::Leaf work;
     OwnedBox box;
     MasterInfo master;
+    // Triangles inside the leaf too small to be counted yet: each lies
+    // inside the leaf's square and is at least two levels below it, so no
+    // count that anyone reads before the leaf splits includes it.  The list
+    // is read only by the worker refining the leaf; stale entries are
+    // swept out when it grows to twice what was live at its last sweep.
+    DeferredList deferred;
+    std::size_t deferred_sweep_at = 4 * DeferredBlock::capacity;
 };
 
-// Per-triangle-slot record of the cells a triangle is counted in:
+// How a triangle is counted, kept in its mesh::Triangle::user_tag: 0 not
+// counted (too small to matter, pending or deferred), counted_tag counted in
+// the cells its CellRecord names.
+inline constexpr std::uint8_t counted_tag = 1;
+
+// Per-triangle-slot record of the cells a counted triangle is counted in:
 // bit 63 set, level (6 bits) << 56, cell mask (4 bits) << 52, ix << 26, iy
-// (26 bits each); 0 = not counted.  While a worker refines, a new triangle's
-// slot holds bit 62 and its index in the worker's pending list instead (see
-// Worker::flush_pending).
+// (26 bits each).  Meaningful only while the slot's tag is counted_tag.
 using CellRecord = std::uint64_t;
-inline constexpr CellRecord counted_bit = std::uint64_t{1} << 63;
-inline constexpr CellRecord pending_bit = std::uint64_t{1} << 62;
 using CellRecords = mesh::ChunkTable<CellRecord, 16, (mesh::max_triangles >> 16)>;
 
 // Computes the record of a triangle with this circumcircle (pure).
@@ -103,7 +118,7 @@ public:
     // and the split (line 13).  Returns whether the leaf split.
     bool run(NodeId leaf, std::int32_t tag);
 
-    void triangles_killed(std::span<const mesh::TriangleId> killed) override;
+    void triangles_killed(std::span<const mesh::TriangleId> killed, std::span<const std::uint8_t> tags) override;
     void triangle_created(mesh::TriangleId t, const geometry::Circle& circumcircle) override;
 
     LeafState* new_leaf_state(NodeId leaf);
@@ -130,7 +145,27 @@ private:
     // count, and a triangle that died meanwhile is never counted at all.
     // (The master reads only internal nodes' counts while a worker runs,
     // and may read them before any increment anyway.)
+    //
+    // Most triangles that outlive their run are far smaller than the leaf
+    // (the leaf stops refining about g levels above its finest triangles),
+    // and their cells' counts matter only once the leaf has split down to
+    // one level above them.  So a triangle two or more levels below the
+    // leaf being refined, inside its square, is not counted but listed in
+    // the leaf (LeafState::deferred); a split hands the list down to the
+    // children, counting the triangles that are now only one level below
+    // them (or that straddle two children).  A listed triangle that dies
+    // costs nothing, and most of the final mesh is never counted at all.
+    // Invariant: a live triangle is counted, or listed in the one leaf
+    // whose square holds it with room to spare (Quadtree::disk_inside) at
+    // least two levels above it.
     void flush_pending();
+    // Counts the live triangle e, or lists it in `leaf` (of this level and
+    // square) when it may be deferred there.
+    void count_or_defer(DeferredTriangle e, const geometry::Circle& circumcircle, int leaf_level,
+                        const Square& leaf_square, LeafState& leaf);
+    void defer(DeferredTriangle e, LeafState& leaf);
+    bool may_defer(const geometry::Circle& circumcircle, int leaf_level, const Square& leaf_square) const;
+    void hand_down_deferred(NodeId leaf);
     void apply(CellRecord record, int delta, bool check_zone);
     // Where the work item should go: a leaf of this worker's zone (pushed
     // there) or the master's outbox.
@@ -150,15 +185,17 @@ private:
     refine::LeafRefiner refiner_;
     NodeAllocator nodes_;
     std::deque<LeafState> leaf_states_;
+    BlockPool deferred_blocks_;
     struct Pending {
         mesh::TriangleId t;
-        bool live;
-        geometry::Circle circumcircle;
+        std::uint32_t generation;  // stale once the triangle died or changed
+        bool deferrable;           // may_defer in the leaf being refined
     };
     std::vector<Pending> pending_;
     std::vector<refine::QueuedTriangle> routing_triangles_;
     std::vector<refine::QueuedSubsegment> routing_subsegments_;
     NodeId current_ = no_node;
+    Square current_square_{};
     std::int32_t tag_ = 0;  // the zone's Node::owner while a run goes on
     // Cells found lately: consecutive triangles mostly share cells, and a
     // cell's node never changes (nodes are never freed).

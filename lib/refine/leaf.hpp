@@ -32,8 +32,9 @@
 // triangles at 20 degrees).  Levels are allocated on first use, so a leaf
 // that never sees a level costs a null pointer for it.
 
-#include <cmath>
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -46,6 +47,10 @@ namespace gpdr::refine {
 struct QueuedTriangle {
     mesh::TriangleId id;
     std::uint32_t generation;
+    // Where in the leaf that queued it the point deciding its leaf lies
+    // (Leaf::where), so that a split can hand it to a child without looking
+    // at the mesh; 0: unknown.
+    std::uint32_t where = 0;
 };
 
 struct QueuedSubsegment {
@@ -71,6 +76,32 @@ public:
         return s < bucket_count ? s : bucket_count - 1;
     }
 
+    // The leaf's square's lower left corner (parallel layer): from then on
+    // `where` locates points in it.
+    void set_corner(const geometry::Point& corner) {
+        corner_ = corner;
+        has_corner_ = true;
+    }
+    // The quadrants that hold p on the way down from this leaf's square, for
+    // where_levels levels: the quadrant q = (x half) | (y half) << 1 of the
+    // first split in bits 31-30, of the second in bits 29-28, ..., and in
+    // bits 3-0 how many levels are left (0: unknown, as for a leaf without
+    // a corner).  A point outside the square counts as in its nearest cell.
+    static constexpr std::uint32_t where_levels = 14;
+    std::uint32_t where(const geometry::Point& p) const {
+        if (!has_corner_) return 0;
+        constexpr double cells = double(1u << where_levels);
+        const double scale = cells / side_;
+        const auto cell = [&](double f) {
+            // std::max(0.0, NaN) is 0.0: a point that is not a number lands in cell 0.
+            return static_cast<std::uint32_t>(static_cast<std::int64_t>(std::min(std::max(0.0, f), cells - 1)));
+        };
+        return (interleave(cell((p.x - corner_.x) * scale), cell((p.y - corner_.y) * scale)) << 4) | where_levels;
+    }
+    // The first quadrant of `where`, and `where` as seen from that child.
+    static int first_quadrant(std::uint32_t where) { return static_cast<int>(where >> 30); }
+    static std::uint32_t in_child(std::uint32_t where) { return ((where << 2) & ~15u) | ((where & 15u) - 1); }
+
     void set_owner(OwnsPoint owns, const void* context) {
         owns_ = owns;
         owns_context_ = context;
@@ -93,11 +124,13 @@ public:
         while (lowest_ < bucket_count && (!levels_[lowest_] || levels_[lowest_]->entries == 0)) ++lowest_;
         return lowest_ < bucket_count ? lowest_ : -1;
     }
-    // Takes from level j the newest entry of the worst shape rank.
-    bool pop_poor(int j, QueuedTriangle& q) {
+    // Takes from level j the newest entry of the worst shape rank (stored in
+    // *rank when asked).
+    bool pop_poor(int j, QueuedTriangle& q, int* rank = nullptr) {
         Level* l = levels_[j].get();
         if (!l || l->entries == 0) return false;
         while (l->ranks[l->lowest_rank].empty()) ++l->lowest_rank;
+        if (rank != nullptr) *rank = l->lowest_rank;
         std::vector<QueuedTriangle>& stack = l->ranks[l->lowest_rank];
         q = stack.back();
         stack.pop_back();
@@ -125,8 +158,21 @@ public:
     std::vector<QueuedSubsegment> handed_off_subsegments;
 
 private:
+    // Bits 0-15 of x spread to the even bits of the result, of y to the odd.
+    static std::uint32_t interleave(std::uint32_t x, std::uint32_t y) {
+        const auto spread = [](std::uint32_t v) {
+            v = (v | (v << 8)) & 0x00FF00FFu;
+            v = (v | (v << 4)) & 0x0F0F0F0Fu;
+            v = (v | (v << 2)) & 0x33333333u;
+            return (v | (v << 1)) & 0x55555555u;
+        };
+        return spread(x) | (spread(y) << 1);
+    }
+
     double side_squared_;
     double side_;
+    geometry::Point corner_{};
+    bool has_corner_ = false;
     struct Level {
         std::array<std::vector<QueuedTriangle>, rank_count> ranks;
         int lowest_rank = rank_count;

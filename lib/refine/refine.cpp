@@ -164,7 +164,7 @@ void LeafRefiner::classify(Leaf& leaf, TriangleId t, const TriangleMeasures& m) 
     r.flags = static_cast<std::uint8_t>(protected_angle ? r.flags | mesh::Triangle::small_angle_bit
                                                         : r.flags & ~mesh::Triangle::small_angle_bit);
     if (poorness != Poorness::good) {
-        const QueuedTriangle q{t, r.generation};
+        const QueuedTriangle q{t, r.generation, leaf.where(m.circle.centre)};
         // Poor triangles are routed by their circumcentre; the Steiner point
         // itself is checked again before it is inserted.
         if (leaf.owns(m.circle.centre))
@@ -187,7 +187,7 @@ void LeafRefiner::classify_all(Leaf& leaf) {
 
 void LeafRefiner::classify_created(Leaf& leaf) {
     report_.triangles_created += buffer_.created.size();
-    if (observer_ != nullptr) observer_->triangles_killed(buffer_.killed);
+    if (observer_ != nullptr) observer_->triangles_killed(buffer_.killed, buffer_.killed_tags);
     for (TriangleId id : buffer_.created) {
         const mesh::Triangle& r = mesh_.triangle(id);
         const TriangleMeasures m = QualityTest::measure(mesh_.point(r.v[0]), mesh_.point(r.v[1]), mesh_.point(r.v[2]));

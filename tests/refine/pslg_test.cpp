@@ -161,7 +161,8 @@ TEST_CASE("the final count from classification's marks equals assessing every tr
             settings.criteria.min_angle_degrees = c.angle;
             settings.criteria.max_area = c.area;
             settings.no_segment_splitting = c.no_segment_splitting;
-            settings.segment_ends = segment_ends(c.pslg);
+            const auto ends = segment_ends(c.pslg);  // (settings only view it: kept alive here)
+            settings.segment_ends = ends;
             settings.checked = checked == 1;
             refine_mesh(m, settings, reports[checked]);
             triangles[checked] = m.count_triangles();

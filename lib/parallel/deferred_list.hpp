@@ -1,0 +1,130 @@
+#pragma once
+// A leaf's list of triangles whose counting is put off (Worker::flush_pending
+// explains why), kept in blocks of a few kilobytes that a worker recycles.
+//
+// The lists of all leaves together hold about one entry per triangle of the
+// mesh, and a split empties a list into its children's.  Growing vectors
+// would copy every entry at each doubling and hand large buffers back to the
+// system only to fault fresh zeroed pages in for the next; fixed blocks
+// taken from, and given back to, the worker's own BlockPool are never copied
+// and mostly come back warm.
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "mesh/ids.hpp"
+
+namespace gpdr::parallel {
+
+// A triangle whose counting is put off: stale once the slot's generation
+// has moved on.
+struct DeferredTriangle {
+    mesh::TriangleId t;
+    std::uint32_t generation;
+};
+
+struct DeferredBlock {
+    static constexpr std::uint32_t capacity = 510;  // (a block is 4 KiB)
+    DeferredBlock* next = nullptr;
+    std::uint32_t size = 0;
+    DeferredTriangle items[capacity];
+};
+
+// The spare blocks of one worker.  Blocks move between lists and pools of
+// different workers (a leaf is refined by whichever worker gets it); each
+// stays owned by the pool that made it, and all pools are destroyed
+// together after refinement, when no list is read any more.
+class BlockPool {
+public:
+    DeferredBlock* take() {
+        if (free_ == nullptr) return made_.emplace_back(std::make_unique<DeferredBlock>()).get();
+        DeferredBlock* b = free_;
+        free_ = b->next;
+        b->next = nullptr;
+        b->size = 0;
+        return b;
+    }
+    void give(DeferredBlock* b) {
+        b->next = free_;
+        free_ = b;
+    }
+
+private:
+    std::vector<std::unique_ptr<DeferredBlock>> made_;
+    DeferredBlock* free_ = nullptr;
+};
+
+class DeferredList {
+public:
+    std::size_t size() const { return size_; }
+
+    void push(DeferredTriangle e, BlockPool& pool) {
+        if (head_ == nullptr || head_->size == DeferredBlock::capacity) {
+            DeferredBlock* b = pool.take();
+            b->next = head_;
+            head_ = b;
+        }
+        head_->items[head_->size++] = e;
+        ++size_;
+    }
+
+    template <class F>
+    void for_each(F&& f) const {
+        for (const DeferredBlock* b = head_; b != nullptr; b = b->next)
+            for (std::uint32_t i = 0; i < b->size; ++i) f(b->items[i]);
+    }
+
+    // Calls f on every entry and empties the list, giving each block back
+    // as soon as it is read (f may push onto other lists from the same
+    // pool).
+    template <class F>
+    void drain(F&& f, BlockPool& pool) {
+        DeferredBlock* b = head_;
+        head_ = nullptr;
+        size_ = 0;
+        while (b != nullptr) {
+            for (std::uint32_t i = 0; i < b->size; ++i) f(b->items[i]);
+            DeferredBlock* next = b->next;
+            pool.give(b);
+            b = next;
+        }
+    }
+
+    // Keeps the entries for which keep(entry) holds, packed into the first
+    // blocks of the chain (writing never overtakes reading); the blocks left
+    // empty go back to the pool.
+    template <class Keep>
+    void sweep(Keep&& keep, BlockPool& pool) {
+        if (head_ == nullptr) return;
+        DeferredBlock* out = head_;
+        std::uint32_t at = 0;
+        size_ = 0;
+        for (DeferredBlock* b = head_; b != nullptr; b = b->next) {
+            for (std::uint32_t i = 0; i < b->size; ++i) {
+                if (!keep(b->items[i])) continue;
+                if (at == DeferredBlock::capacity) {
+                    out->size = at;
+                    out = out->next;
+                    at = 0;
+                }
+                out->items[at++] = b->items[i];
+                ++size_;
+            }
+        }
+        out->size = at;
+        DeferredBlock* rest = out->next;
+        out->next = nullptr;
+        while (rest != nullptr) {
+            DeferredBlock* next = rest->next;
+            pool.give(rest);
+            rest = next;
+        }
+    }
+
+private:
+    DeferredBlock* head_ = nullptr;
+    std::size_t size_ = 0;
+};
+
+}  // namespace gpdr::parallel

@@ -1,0 +1,136 @@
+// The pieces the deferred counting rests on: the block lists of deferred
+// triangles (sweep and drain against a plain vector), the quadrant path a
+// queue entry carries through splits (Leaf::where against the quadtree's own
+// child squares), and the quadtree's division-free level test against
+// level_of.
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "parallel/deferred_list.hpp"
+#include "parallel/quadtree.hpp"
+#include "refine/leaf.hpp"
+
+namespace gpdr::parallel {
+namespace {
+
+std::vector<std::uint32_t> contents(const DeferredList& list) {
+    std::vector<std::uint32_t> out;
+    list.for_each([&](const DeferredTriangle& e) { out.push_back(mesh::index(e.t)); });
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+TEST_CASE("deferred lists keep, sweep and drain what a vector would", "[parallel][deferred]") {
+    BlockPool pool;
+    DeferredList list;
+    std::vector<std::uint32_t> expected;
+    const std::uint32_t n = 3 * DeferredBlock::capacity + 17;  // several blocks, the last one partial
+    for (std::uint32_t i = 0; i < n; ++i) {
+        list.push({mesh::TriangleId{i}, i % 7}, pool);
+        expected.push_back(i);
+    }
+    CHECK(list.size() == n);
+    CHECK(contents(list) == expected);
+
+    // Keep one entry in three: the survivors are packed, the emptied blocks
+    // go back to the pool and come out again for the next pushes.
+    list.sweep([](const DeferredTriangle& e) { return mesh::index(e.t) % 3 == 0; }, pool);
+    std::vector<std::uint32_t> kept;
+    for (std::uint32_t i : expected)
+        if (i % 3 == 0) kept.push_back(i);
+    CHECK(list.size() == kept.size());
+    CHECK(contents(list) == kept);
+    for (std::uint32_t i = n; i < n + 2 * DeferredBlock::capacity; ++i) {
+        list.push({mesh::TriangleId{i}, 0}, pool);
+        kept.push_back(i);
+    }
+    CHECK(contents(list) == kept);
+
+    // Sweeping everything away leaves an empty list that still takes pushes.
+    DeferredList other;
+    for (std::uint32_t i = 0; i < 10; ++i) other.push({mesh::TriangleId{i}, 0}, pool);
+    other.sweep([](const DeferredTriangle&) { return false; }, pool);
+    CHECK(other.size() == 0);
+    CHECK(contents(other).empty());
+    other.push({mesh::TriangleId{5}, 0}, pool);
+    CHECK(contents(other) == std::vector<std::uint32_t>{5});
+
+    // Draining into two lists while the blocks are given back one by one.
+    DeferredList even, odd;
+    std::vector<std::uint32_t> drained;
+    list.drain(
+        [&](const DeferredTriangle& e) {
+            drained.push_back(mesh::index(e.t));
+            (mesh::index(e.t) % 2 == 0 ? even : odd).push(e, pool);
+        },
+        pool);
+    std::sort(drained.begin(), drained.end());
+    CHECK(drained == kept);
+    CHECK(list.size() == 0);
+    CHECK(even.size() + odd.size() == kept.size());
+    for (std::uint32_t i : contents(even)) CHECK(i % 2 == 0);
+    for (std::uint32_t i : contents(odd)) CHECK(i % 2 == 1);
+}
+
+// The child a split picks from an entry's quadrant path is the child whose
+// square holds the point, level after level, as long as the path lasts.
+TEST_CASE("a queue entry's quadrant path follows the quadtree's child squares", "[parallel][deferred]") {
+    Quadtree tree(-3.25, 10.5, 7.0);
+    NodeAllocator alloc;
+    std::mt19937_64 random(12345);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const Square root = tree.square(Quadtree::root());
+    for (int trial = 0; trial < 2000; ++trial) {
+        const geometry::Point p{root.x0 + unit(random) * root.side, root.y0 + unit(random) * root.side};
+        refine::Leaf leaf(root.side);
+        leaf.set_corner({root.x0, root.y0});
+        std::uint32_t where = leaf.where(p);
+        CHECK((where & 15u) == refine::Leaf::where_levels);
+        NodeId node = Quadtree::root();
+        for (std::uint32_t level = 0; level < refine::Leaf::where_levels; ++level) {
+            const Square s = tree.square(node);
+            const double half = 0.5 * s.side;
+            const int expected = (p.x >= s.x0 + half ? 1 : 0) | (p.y >= s.y0 + half ? 2 : 0);
+            // Points within rounding of a dividing line may go either way
+            // (the worker then hands the triangle on): only clear cases count.
+            const bool clear = std::abs(p.x - (s.x0 + half)) > 1e-9 * root.side &&
+                               std::abs(p.y - (s.y0 + half)) > 1e-9 * root.side;
+            if (clear) REQUIRE(refine::Leaf::first_quadrant(where) == expected);
+            where = refine::Leaf::in_child(where);
+            node = tree.child(node, expected, alloc);
+        }
+        CHECK((where & 15u) == 0);  // used up: the split measures the entry again
+    }
+}
+
+TEST_CASE("the division-free two-levels-below test agrees with level_of", "[parallel][deferred]") {
+    Quadtree tree(0.0, 0.0, 3.0);
+    std::mt19937_64 random(777);
+    std::uniform_real_distribution<double> exponent(-70.0, 2.0);
+    for (int trial = 0; trial < 20000; ++trial) {
+        const double r = std::exp2(exponent(random));
+        const double rr = r * r;
+        const int k = tree.level_of(rr);
+        for (int m = 0; m <= max_level; ++m) {
+            const bool below = tree.two_levels_below(rr, m);
+            // Conservative: never claims a triangle that is not two levels
+            // below and countable ...
+            if (below) REQUIRE((k >= m + 2 && k <= max_level));
+            // ... and misses only ones within a hair of a level boundary.
+            if (!below && k >= m + 2 && k <= max_level) {
+                const double q = tree.side_at(0) * tree.side_at(0) / 16 / rr;
+                const double at = std::log2(q) / 2;
+                CHECK((std::abs(at - (m + 2)) < 1e-9 || std::abs(at - (max_level + 1)) < 1e-9));
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace gpdr::parallel

@@ -20,8 +20,8 @@
 // at a time), unless ParallelOptions::one_leaf_for_one_thread asks for the
 // sequential refiner's single leaf that never splits (refine::refine_mesh).
 
-#include <cstdint>
 #include <algorithm>
+#include <cstdint>
 #include <string>
 #include <thread>
 #include <vector>

@@ -169,9 +169,7 @@ void Worker::defer(DeferredTriangle e, LeafState& leaf) {
     // (Its tag is 0 already: new, or listed in the parent.)
     leaf.deferred.push(e, deferred_blocks_);
     if (leaf.deferred.size() >= leaf.deferred_sweep_at) {
-        leaf.deferred.sweep(
-            [&](const DeferredTriangle& e) { return mesh_.triangle(e.t).load_generation() == e.generation; },
-            deferred_blocks_);
+        leaf.deferred.sweep([&](const DeferredTriangle& e) { return alive(e); }, deferred_blocks_);
         leaf.deferred_sweep_at = std::max<std::size_t>(4 * DeferredBlock::capacity, 2 * leaf.deferred.size());
     }
 }
@@ -185,8 +183,8 @@ void Worker::hand_down_deferred(NodeId leaf) {
     const Point middle{squares[3].x0, squares[3].y0};
     n.state->deferred.drain(
         [&](const DeferredTriangle& e) {
+            if (!alive(e)) return;
             const mesh::Triangle& r = mesh_.triangle(e.t);
-            if (r.load_generation() != e.generation) return;
             const geometry::Circle c =
                 geometry::circumcircle(mesh_.point(r.v[0]), mesh_.point(r.v[1]), mesh_.point(r.v[2]));
             const int q = (c.centre.x >= middle.x ? 1 : 0) | (c.centre.y >= middle.y ? 2 : 0);
@@ -223,7 +221,7 @@ void Worker::triangle_created(mesh::TriangleId t, const geometry::Circle& circum
     }
     // Whether it may be deferred is decided now, while the circle is at
     // hand (the leaf stays the same until the flush).
-    pending_.push_back({t, r.generation, may_defer(circumcircle, tree_.node(current_).level, current_square_)});
+    pending_.push_back({t, r.generation, may_defer(circumcircle, current_level_, current_square_)});
 }
 
 // ---- routing ---------------------------------------------------------------------
@@ -287,8 +285,10 @@ void Worker::route_subsegment(refine::QueuedSubsegment s, NodeId splitting) {
 // ---- one leaf ----------------------------------------------------------------------
 
 void Worker::split(NodeId leaf) {
-    // Line 13: the children's counts are already exact (shadow nodes), and
-    // the leaf's own count is 0, so (9) holds for each child.
+    // Line 13: the leaf's own count is 0, so (9) holds for each child; the
+    // children's counts are exact already (shadow nodes: everything at most
+    // one level below the leaf is counted), and the hand-down below counts
+    // what is now one level below a child.
     const OwnedBox s = tree_.node(leaf).state->box;
     for (int q = 0; q < 4; ++q) {
         const NodeId c = tree_.child(leaf, q, nodes_);
@@ -309,7 +309,7 @@ void Worker::split(NodeId leaf) {
         refine::QueuedTriangle q;
         int rank = 0;
         while (work.pop_poor(j, q, &rank)) {
-            if ((q.where & 15u) == 0) {
+            if (refine::Leaf::path_used_up(q.where)) {
                 route_triangle(q, false, s, leaf);
                 continue;
             }
@@ -342,6 +342,7 @@ bool Worker::run(NodeId leaf, std::int32_t tag) {
     const auto t0 = Clock::now();
     current_ = leaf;
     current_square_ = tree_.square(leaf);
+    current_level_ = tree_.node(leaf).level;
     tag_ = tag;
     Node& n = tree_.node(leaf);
     LeafState& state = *n.state;

@@ -164,6 +164,8 @@ private:
     void count_or_defer(DeferredTriangle e, const geometry::Circle& circumcircle, int leaf_level,
                         const Square& leaf_square, LeafState& leaf);
     void defer(DeferredTriangle e, LeafState& leaf);
+    // Whether e's triangle is the one listed (its slot's generation has not moved on).
+    bool alive(DeferredTriangle e) const { return mesh_.triangle(e.t).load_generation() == e.generation; }
     bool may_defer(const geometry::Circle& circumcircle, int leaf_level, const Square& leaf_square) const;
     void hand_down_deferred(NodeId leaf);
     void apply(CellRecord record, int delta, bool check_zone);
@@ -196,6 +198,7 @@ private:
     std::vector<refine::QueuedSubsegment> routing_subsegments_;
     NodeId current_ = no_node;
     Square current_square_{};
+    int current_level_ = 0;  // of current_
     std::int32_t tag_ = 0;  // the zone's Node::owner while a run goes on
     // Cells found lately: consecutive triangles mostly share cells, and a
     // cell's node never changes (nodes are never freed).

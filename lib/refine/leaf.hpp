@@ -101,6 +101,8 @@ public:
     // The first quadrant of `where`, and `where` as seen from that child.
     static int first_quadrant(std::uint32_t where) { return static_cast<int>(where >> 30); }
     static std::uint32_t in_child(std::uint32_t where) { return ((where << 2) & ~15u) | ((where & 15u) - 1); }
+    // Whether no level is left in `where` (or it was never known).
+    static bool path_used_up(std::uint32_t where) { return (where & 15u) == 0; }
 
     void set_owner(OwnsPoint owns, const void* context) {
         owns_ = owns;

@@ -74,11 +74,17 @@ std::size_t find_cavity(Mesh& mesh, const Point& p, TriangleId seed, InsertBuffe
     return boundary_edges;
 }
 
-void save_tags_and_destroy(Pool& pool, InsertBuffer& buf) {
-    buf.killed_tags.resize(buf.killed.size());
-    for (std::size_t i = 0; i < buf.killed.size(); ++i) {
-        buf.killed_tags[i] = pool.mesh().triangle(buf.killed[i]).user_tag;
-        pool.destroy(buf.killed[i]);
+void save_if_tagged(Triangle& t, InsertBuffer& buf) {
+    if (t.user_tag == 0) return;
+    buf.tagged_gone.push_back({{t.v[0], t.v[1], t.v[2]}, t.user_tag});
+    t.user_tag = 0;
+}
+
+void save_tagged_and_destroy(Pool& pool, InsertBuffer& buf) {
+    buf.tagged_gone.clear();
+    for (const TriangleId id : buf.killed) {
+        save_if_tagged(pool.mesh().triangle(id), buf);
+        pool.destroy(id);
     }
 }
 
@@ -145,7 +151,7 @@ InsertResult commit_cavity(Pool& pool, VertexId v, const LocateResult& where, In
     // Step 4b: kill the cavity, then fan the boundary from v.  Slots freed
     // here are the first the pool hands out again.
     const std::uint16_t region = mesh.triangle(seed).region;
-    save_tags_and_destroy(pool, buf);
+    save_tagged_and_destroy(pool, buf);
 
     const std::size_t m = boundary.size();
     const bool open = !skip.is_none();

@@ -50,6 +50,13 @@ struct InsertResult {
     EdgeRef edge;
 };
 
+// A triangle that carried a user_tag (mesh/triangle.hpp) as it was before it
+// died or a flip changed it: its corners, in their order, and the tag.
+struct TaggedTriangle {
+    VertexId v[3];
+    std::uint8_t tag;
+};
+
 struct InsertBuffer {
     // After an insertion: the new triangles, each with the new vertex at
     // corner 2 and its cavity-boundary edge as edge 2, in counter-clockwise
@@ -58,9 +65,11 @@ struct InsertBuffer {
     // ... and the triangles that died.  Their slots may already be reused in
     // `created`, under a new generation.
     std::vector<TriangleId> killed;
-    // The user_tag of each triangle in `killed`, saved before its slot could
-    // be reused.
-    std::vector<std::uint8_t> killed_tags;
+    // The triangles with a nonzero user_tag among those that died, and
+    // among those a flip changed in place (a subsegment split's Lawson
+    // flips), as they were: saved before a slot could be reused or a corner
+    // changed.  A flipped triangle's tag is cleared (it is `created` now).
+    std::vector<TaggedTriangle> tagged_gone;
     // State of the walk's random generator (per thread, reproducible).
     std::uint32_t random_state = 0x2545F491u;
 
@@ -102,9 +111,12 @@ std::size_t find_cavity(Mesh& mesh, const Point& p, TriangleId seed, InsertBuffe
 void abandon_cavity(Mesh& mesh, InsertBuffer& buffer);
 InsertResult commit_cavity(Pool& pool, VertexId v, const LocateResult& where, InsertBuffer& buffer);
 
-// Kills every triangle of buffer.killed, saving their user tags in
-// buffer.killed_tags first (the last step before a cavity is refilled).
-void save_tags_and_destroy(Pool& pool, InsertBuffer& buffer);
+// Kills every triangle of buffer.killed, saving the tagged ones in
+// buffer.tagged_gone first (the last step before a cavity is refilled).
+void save_tagged_and_destroy(Pool& pool, InsertBuffer& buffer);
+// Saves triangle t in buffer.tagged_gone if it has a user tag, and clears
+// the tag (before a flip changes t in place).
+void save_if_tagged(Triangle& t, InsertBuffer& buffer);
 
 // Whether p lies strictly inside the circumcircle of live triangle t (for a
 // ghost triangle: strictly beyond its edge, or inside the open edge).

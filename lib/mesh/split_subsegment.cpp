@@ -66,6 +66,8 @@ void lawson_flips(Mesh& mesh, InsertBuffer& buf) {
         if (geometry::incircle(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]), q) <= 0) continue;
         if (!flippable(mesh, e)) continue;
         const TriangleId other = across.triangle();
+        save_if_tagged(mesh.triangle(e.triangle()), buf);
+        save_if_tagged(mesh.triangle(other), buf);
         flip(mesh, e);
         if (std::find(buf.created.begin(), buf.created.end(), other) == buf.created.end())
             buf.created.push_back(other);
@@ -217,7 +219,7 @@ InsertResult split_subsegment(Pool& pool, EdgeRef s, const Point& asked, VertexK
     if (const SubsegmentInfo* found = mesh.subsegments().find(x, y)) info = *found;
     const VertexId v = pool.new_vertex(p, kind);
 
-    save_tags_and_destroy(pool, buf);
+    save_tagged_and_destroy(pool, buf);
     buf.created.clear();
     bool other_side = false;
     TriangleId previous = no_triangle;

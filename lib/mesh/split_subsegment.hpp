@@ -59,7 +59,8 @@ bool can_split_at(const Mesh& mesh, EdgeRef subsegment, const Point& p);
 // Lawson's flips, starting from every edge of the triangles in
 // buffer.created, until each edge that is not a subsegment is locally
 // Delaunay (exact incircle).  Triangles a flip changes are appended to
-// `created`.  For repairs after a change that can break the constrained
+// `created`; those with a user tag are saved (appended) in `tagged_gone` as
+// they were before the flip, and their tags cleared.  For repairs after a change that can break the constrained
 // Delaunay property only locally (a bent subsegment, a removed constraint).
 void lawson_flips(Mesh& mesh, InsertBuffer& buffer);
 

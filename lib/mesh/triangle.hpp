@@ -44,8 +44,9 @@ struct Triangle {
     std::uint16_t region;
     std::uint8_t flags;
     // A byte for the layers above the mesh (the parallel refiner keeps how
-    // the triangle is counted in it): 0 in a new triangle, kept by flips,
-    // and saved in InsertBuffer::killed_tags when the triangle dies.
+    // the triangle is counted in it): 0 in a new triangle; when an insertion
+    // kills the triangle or flips it, the triangle as it was is saved in
+    // InsertBuffer::tagged_gone (a flipped one loses its tag).
     std::uint8_t user_tag;
 
     bool live() const { return (flags & live_bit) != 0; }

@@ -248,10 +248,9 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in
     refine::RefineRun run(mesh, settings);
     const Square root = root_square(mesh);
     Quadtree tree(root.x0, root.y0, root.side);
-    CellRecords records;
     std::vector<std::unique_ptr<Worker>> workers;
     for (unsigned w = 0; w < threads; ++w)
-        workers.push_back(std::make_unique<Worker>(mesh, run, tree, records, options));
+        workers.push_back(std::make_unique<Worker>(mesh, run, tree, options));
 
     // The first leaf: the root, every triangle counted and classified.
     Node& root_node = tree.node(Quadtree::root());
@@ -281,7 +280,7 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in
 
     std::exception_ptr failure;
     const std::function<void()> check = [&] {
-        verify_quadtree(mesh, tree, records, report.problems);
+        verify_quadtree(mesh, tree, report.problems);
         ++report.checks;
         for (const auto& w : workers)
             if (w->zone_escapes != 0)

@@ -103,9 +103,8 @@ private:
 };
 
 // Checked mode: the quadtree invariants on a quiescent mesh (no worker
-// busy): exact counters and records, relation (9) with effective sides for
+// busy): exact counters, relation (9) with effective sides for
 // every leaf, leaves tiling the root.  Problems are appended to `problems`.
-void verify_quadtree(const mesh::Mesh& mesh, Quadtree& tree, const CellRecords& records,
-                     std::vector<std::string>& problems);
+void verify_quadtree(const mesh::Mesh& mesh, Quadtree& tree, std::vector<std::string>& problems);
 
 }  // namespace gpdr::parallel

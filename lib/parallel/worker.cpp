@@ -57,12 +57,10 @@ CellRecord cell_record(const Quadtree& tree, const Point& centre, double radius_
            std::uint64_t(y_lo);
 }
 
-Worker::Worker(mesh::Mesh& mesh, refine::RefineRun& run, Quadtree& tree, CellRecords& records,
-               const ParallelOptions& options)
+Worker::Worker(mesh::Mesh& mesh, refine::RefineRun& run, Quadtree& tree, const ParallelOptions& options)
     : mesh_(mesh),
       run_(run),
       tree_(tree),
-      records_(records),
       options_(options),
       pool_(mesh),
       refiner_(run, pool_, report) {
@@ -128,14 +126,15 @@ void Worker::count(mesh::TriangleId t, const geometry::Circle& c) {
         r.user_tag = 0;
         return;
     }
-    const std::uint32_t i = mesh::index(t);
-    records_.ensure(i >> 16, true);  // (read before written: see ChunkTable::ensure)
-    records_[i] = record;
     r.user_tag = counted_tag;
     apply(record, +1, current_ != no_node);
 }
 
-void Worker::uncount(mesh::TriangleId t) { apply(records_[mesh::index(t)], -1, false); }
+void Worker::uncount(const mesh::TaggedTriangle& was) {
+    const geometry::Circle c =
+        geometry::circumcircle(mesh_.point(was.v[0]), mesh_.point(was.v[1]), mesh_.point(was.v[2]));
+    apply(cell_record(tree_, c.centre, c.radius_squared, outgrew_root), -1, false);
+}
 
 void Worker::flush_pending() {
     if (pending_.empty()) return;
@@ -199,22 +198,18 @@ void Worker::count_all() {
     });
 }
 
-// Killed first: their slots may be reused by the created triangles that
-// follow, so whether each was counted comes from the tag saved at its death
-// (a pending or deferred triangle needs nothing: its entry goes stale with
-// the slot's generation).  A created triangle that a flip changed in place
-// drops what it counted and is counted afresh.
-void Worker::triangles_killed(std::span<const mesh::TriangleId> killed, std::span<const std::uint8_t> tags) {
-    for (std::size_t i = 0; i < killed.size(); ++i)
-        if (tags[i] == counted_tag) uncount(killed[i]);
+// The counted triangles that died or flipped, first: uncounted from their
+// corners as they were (their slots may be reused by the created triangles
+// that follow).  A pending or deferred triangle needs nothing: its entry goes
+// stale with the slot's generation, which a death or a flip bumps.
+void Worker::tagged_triangles_gone(std::span<const mesh::TaggedTriangle> gone) {
+    for (const mesh::TaggedTriangle& was : gone)
+        if (was.tag == counted_tag) uncount(was);
 }
 
+// A new triangle, or one a flip changed (its tag is 0: see above).
 void Worker::triangle_created(mesh::TriangleId t, const geometry::Circle& circumcircle) {
-    mesh::Triangle& r = mesh_.triangle(t);
-    if (r.user_tag == counted_tag) {
-        uncount(t);
-        r.user_tag = 0;
-    }
+    const mesh::Triangle& r = mesh_.triangle(t);
     if (current_ == no_node) {
         count(t, circumcircle);
         return;

@@ -97,19 +97,21 @@ struct LeafState {
 // the cells its CellRecord names.
 inline constexpr std::uint8_t counted_tag = 1;
 
-// Per-triangle-slot record of the cells a counted triangle is counted in:
-// bit 63 set, level (6 bits) << 56, cell mask (4 bits) << 52, ix << 26, iy
-// (26 bits each).  Meaningful only while the slot's tag is counted_tag.
+// The cells a counted triangle is counted in: bit 63 set, level (6 bits)
+// << 56, cell mask (4 bits) << 52, ix << 26, iy (26 bits each); 0 for a
+// triangle too small to be counted.
 using CellRecord = std::uint64_t;
-using CellRecords = mesh::ChunkTable<CellRecord, 16, (mesh::max_triangles >> 16)>;
 
-// Computes the record of a triangle with this circumcircle (pure).
+// Computes the record of a triangle with this circumcircle (pure).  It is
+// not stored: a counted triangle that dies or flips is uncounted from its
+// corners as they were (mesh::TaggedTriangle), whose circumcircle, computed
+// by the same function from the same corners in the same order, gives the
+// same record bit for bit.
 CellRecord cell_record(const Quadtree& tree, const Point& centre, double radius_squared, bool& outgrew_root);
 
 class Worker final : public refine::MeshObserver {
 public:
-    Worker(mesh::Mesh& mesh, refine::RefineRun& run, Quadtree& tree, CellRecords& records,
-           const ParallelOptions& options);
+    Worker(mesh::Mesh& mesh, refine::RefineRun& run, Quadtree& tree, const ParallelOptions& options);
 
     // Counts every live triangle (single-threaded, before refinement starts).
     void count_all();
@@ -118,7 +120,7 @@ public:
     // and the split (line 13).  Returns whether the leaf split.
     bool run(NodeId leaf, std::int32_t tag);
 
-    void triangles_killed(std::span<const mesh::TriangleId> killed, std::span<const std::uint8_t> tags) override;
+    void tagged_triangles_gone(std::span<const mesh::TaggedTriangle> gone) override;
     void triangle_created(mesh::TriangleId t, const geometry::Circle& circumcircle) override;
 
     LeafState* new_leaf_state(NodeId leaf);
@@ -136,7 +138,7 @@ public:
 
 private:
     void count(mesh::TriangleId t, const geometry::Circle& circumcircle);
-    void uncount(mesh::TriangleId t);
+    void uncount(const mesh::TaggedTriangle& was);
     // Counts the triangles created since the last call that are still
     // alive.  Most triangles a run creates die within the same run (each
     // insertion kills about four), and nobody reads a count of this
@@ -181,7 +183,6 @@ private:
     mesh::Mesh& mesh_;
     refine::RefineRun& run_;
     Quadtree& tree_;
-    CellRecords& records_;
     const ParallelOptions& options_;
     mesh::Pool pool_;
     refine::LeafRefiner refiner_;

@@ -187,7 +187,8 @@ void LeafRefiner::classify_all(Leaf& leaf) {
 
 void LeafRefiner::classify_created(Leaf& leaf) {
     report_.triangles_created += buffer_.created.size();
-    if (observer_ != nullptr) observer_->triangles_killed(buffer_.killed, buffer_.killed_tags);
+    if (observer_ != nullptr) observer_->tagged_triangles_gone(buffer_.tagged_gone);
+    buffer_.tagged_gone.clear();  // (told once)
     for (TriangleId id : buffer_.created) {
         const mesh::Triangle& r = mesh_.triangle(id);
         const TriangleMeasures m = QualityTest::measure(mesh_.point(r.v[0]), mesh_.point(r.v[1]), mesh_.point(r.v[2]));

@@ -154,14 +154,14 @@ private:
 
 // Told of every change refinement makes to the mesh (the parallel layer
 // keeps its quadtree counters with it).  For each insertion or split:
-// first the slots that died (some may already be reused by the triangles
-// that follow) with the user tags they had, then each new triangle, or one a
-// flip changed in place, with the circumcircle classification computes for
-// it anyway.
+// first the tagged triangles that died or that a flip changed, as they were
+// (mesh::InsertBuffer::tagged_gone; their slots may already be reused by the
+// triangles that follow), then each new triangle, or one a flip changed in
+// place, with the circumcircle classification computes for it anyway.
 class MeshObserver {
 public:
     virtual ~MeshObserver() = default;
-    virtual void triangles_killed(std::span<const mesh::TriangleId> killed, std::span<const std::uint8_t> tags) = 0;
+    virtual void tagged_triangles_gone(std::span<const mesh::TaggedTriangle> gone) = 0;
     virtual void triangle_created(mesh::TriangleId t, const geometry::Circle& circumcircle) = 0;
 };
 

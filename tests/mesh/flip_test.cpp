@@ -1,10 +1,12 @@
 // Edge flips: the drawing's contract (corners, neighbours, flags,
-// generations), refusal of unflippable edges, repair of a non-Delaunay edge.
+// generations), refusal of unflippable edges, repair of a non-Delaunay edge,
+// and Lawson's flips saving the tagged triangles they change.
 
 #include <catch2/catch.hpp>
 
 #include "mesh/checker.hpp"
 #include "mesh/flip.hpp"
+#include "mesh/split_subsegment.hpp"
 #include "mesh/test_support.hpp"
 
 using namespace gpdr::mesh;
@@ -93,4 +95,39 @@ TEST_CASE("a flip repairs a non-Delaunay edge", "[mesh][flip]") {
     flip(mesh, edge_of(mesh, t, 2, 0));
     CHECK(check_mesh(mesh).empty());
     CHECK(canonical(mesh) == std::vector<Tri>{{0, 1, 3}, {1, 2, 3}});
+}
+
+TEST_CASE("Lawson's flips save the tagged triangles they change and clear their tags", "[mesh][flip]") {
+    // The kite's diagonal 0-2 is not locally Delaunay; the flip from the
+    // "created" triangle 0-1-2 changes it and the triangle beyond.
+    const std::vector<Point> kite{{0, 0}, {1, -0.3}, {2, 0}, {1, 0.3}};
+    Mesh mesh = mesh_from_triangles(kite, {{0, 1, 2}, {0, 2, 3}});
+    const TriangleId t = find_triangle(mesh, 0, 1, 2), beyond = find_triangle(mesh, 0, 2, 3);
+    InsertBuffer buffer;
+    buffer.created = {t};
+    const auto corners = [](const TaggedTriangle& g) {
+        return Tri{index(g.v[0]), index(g.v[1]), index(g.v[2])};
+    };
+    SECTION("only the triangle beyond is tagged") {
+        mesh.triangle(beyond).user_tag = 7;
+        lawson_flips(mesh, buffer);
+        REQUIRE(buffer.tagged_gone.size() == 1);
+        CHECK(corners(buffer.tagged_gone[0]) == Tri{0, 2, 3});
+        CHECK(buffer.tagged_gone[0].tag == 7);
+    }
+    SECTION("both are tagged") {
+        mesh.triangle(t).user_tag = 5;
+        mesh.triangle(beyond).user_tag = 7;
+        lawson_flips(mesh, buffer);
+        REQUIRE(buffer.tagged_gone.size() == 2);
+        CHECK(corners(buffer.tagged_gone[0]) == Tri{0, 1, 2});
+        CHECK(buffer.tagged_gone[0].tag == 5);
+        CHECK(corners(buffer.tagged_gone[1]) == Tri{0, 2, 3});
+        CHECK(buffer.tagged_gone[1].tag == 7);
+    }
+    CHECK(check_mesh(mesh).empty());
+    CHECK(canonical(mesh) == std::vector<Tri>{{0, 1, 3}, {1, 2, 3}});
+    CHECK(mesh.triangle(t).user_tag == 0);
+    CHECK(mesh.triangle(beyond).user_tag == 0);
+    CHECK(buffer.created.size() == 2);  // the changed triangle beyond joined them
 }

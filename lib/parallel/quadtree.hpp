@@ -52,7 +52,7 @@ namespace gpdr::parallel {
 using geometry::Point;
 using NodeId = std::uint32_t;
 inline constexpr NodeId no_node = 0xFFFFFFFFu;
-// Deepest level (cell coordinates fit 26 bits in the per-triangle records).
+// Deepest level (cell coordinates fit the 26 bits they have in a CellRecord).
 inline constexpr int max_level = 26;
 
 enum class NodeKind : std::uint8_t { shadow = 0, leaf = 1, internal = 2 };
@@ -230,7 +230,9 @@ private:
     double rounding_margin_;
     double sides_[max_level + 2];      // ℓ_k
     double inverse_sides_[max_level + 2];  // 1 / ℓ_k
-    mutable mesh::ChunkTable<Node, 12, (1u << 20)> nodes_;
+    // 2^28 nodes at most (the graded pipe needs about 400 thousand): the
+    // table of chunk pointers, zeroed up front, stays at 512 KiB.
+    mutable mesh::ChunkTable<Node, 12, (1u << 16)> nodes_;
     std::atomic<std::uint32_t> next_{0};
 };
 

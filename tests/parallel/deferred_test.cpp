@@ -19,6 +19,28 @@
 namespace gpdr::parallel {
 namespace {
 
+// The look-ahead callback of sweep and drain: sees each entry exactly once,
+// before the entry itself is read.
+struct AheadLog {
+    std::vector<std::uint32_t> shown;
+    std::vector<bool> read;
+    bool early = true;  // every entry was shown before it was read
+    void show(const DeferredTriangle& e) {
+        shown.push_back(mesh::index(e.t));
+        if (mesh::index(e.t) < read.size() && read[mesh::index(e.t)]) early = false;
+    }
+    void reading(const DeferredTriangle& e) {
+        if (read.size() <= mesh::index(e.t)) read.resize(mesh::index(e.t) + 1);
+        read[mesh::index(e.t)] = true;
+        if (std::find(shown.begin(), shown.end(), mesh::index(e.t)) == shown.end()) early = false;
+    }
+    std::vector<std::uint32_t> sorted_shown() const {
+        auto s = shown;
+        std::sort(s.begin(), s.end());
+        return s;
+    }
+};
+
 std::vector<std::uint32_t> contents(const DeferredList& list) {
     std::vector<std::uint32_t> out;
     list.for_each([&](const DeferredTriangle& e) { out.push_back(mesh::index(e.t)); });
@@ -40,7 +62,15 @@ TEST_CASE("deferred lists keep, sweep and drain what a vector would", "[parallel
 
     // Keep one entry in three: the survivors are packed, the emptied blocks
     // go back to the pool and come out again for the next pushes.
-    list.sweep([](const DeferredTriangle& e) { return mesh::index(e.t) % 3 == 0; }, pool);
+    AheadLog swept;
+    list.sweep(
+        [&](const DeferredTriangle& e) {
+            swept.reading(e);
+            return mesh::index(e.t) % 3 == 0;
+        },
+        [&](const DeferredTriangle& e) { swept.show(e); }, pool);
+    CHECK(swept.sorted_shown() == expected);
+    CHECK(swept.early);
     std::vector<std::uint32_t> kept;
     for (std::uint32_t i : expected)
         if (i % 3 == 0) kept.push_back(i);
@@ -55,7 +85,7 @@ TEST_CASE("deferred lists keep, sweep and drain what a vector would", "[parallel
     // Sweeping everything away leaves an empty list that still takes pushes.
     DeferredList other;
     for (std::uint32_t i = 0; i < 10; ++i) other.push({mesh::TriangleId{i}, 0}, pool);
-    other.sweep([](const DeferredTriangle&) { return false; }, pool);
+    other.sweep([](const DeferredTriangle&) { return false; }, [](const DeferredTriangle&) {}, pool);
     CHECK(other.size() == 0);
     CHECK(contents(other).empty());
     other.push({mesh::TriangleId{5}, 0}, pool);
@@ -64,14 +94,18 @@ TEST_CASE("deferred lists keep, sweep and drain what a vector would", "[parallel
     // Draining into two lists while the blocks are given back one by one.
     DeferredList even, odd;
     std::vector<std::uint32_t> drained;
+    AheadLog shown;
     list.drain(
         [&](const DeferredTriangle& e) {
+            shown.reading(e);
             drained.push_back(mesh::index(e.t));
             (mesh::index(e.t) % 2 == 0 ? even : odd).push(e, pool);
         },
-        pool);
+        [&](const DeferredTriangle& e) { shown.show(e); }, pool);
     std::sort(drained.begin(), drained.end());
     CHECK(drained == kept);
+    CHECK(shown.sorted_shown() == kept);
+    CHECK(shown.early);
     CHECK(list.size() == 0);
     CHECK(even.size() + odd.size() == kept.size());
     for (std::uint32_t i : contents(even)) CHECK(i % 2 == 0);

@@ -337,6 +337,9 @@ void Worker::split(NodeId leaf) {
     }
     refine::QueuedSubsegment e;
     while (work.pop_subsegment(e)) route_subsegment(e, leaf);
+    // The emptied queues would otherwise hold their capacity (tens of
+    // megabytes over all split leaves) until refinement ends.
+    work.release();
 }
 
 // Whether the leaf should split now, before refining further: relation (9)

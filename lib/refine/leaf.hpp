@@ -154,6 +154,18 @@ public:
 
     bool idle() const { return poor_entries_ == 0 && subsegments_.empty(); }
 
+    // Frees the queues' storage (a leaf that split and handed its work to
+    // its children keeps its node, but never queues anything again).  Any
+    // entries left are dropped.
+    void release() {
+        levels_ = {};
+        lowest_ = bucket_count;
+        poor_entries_ = 0;
+        std::vector<QueuedSubsegment>().swap(subsegments_);
+        std::vector<QueuedTriangle>().swap(handed_off_triangles);
+        std::vector<QueuedSubsegment>().swap(handed_off_subsegments);
+    }
+
     // Work that belongs to other leaves (parallel layer); always empty for a
     // leaf without an `owns` hook.
     std::vector<QueuedTriangle> handed_off_triangles;

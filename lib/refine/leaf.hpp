@@ -29,8 +29,9 @@
 // rank_count stacks by shape rank (QualityTest::shape_rank, 0 = worst).
 // Within a stack the newest goes first: it was just created, so it is still
 // in the cache (first-in-first-out was 1.6 times slower, for 1% fewer
-// triangles at 20 degrees).  Levels are allocated on first use, so a leaf
-// that never sees a level costs a null pointer for it.
+// triangles at 20 degrees).  Levels are allocated on first use, and the
+// table of them grows only as far as the deepest level used (a quadtree leaf
+// sees a handful of levels; -g1 makes hundreds of thousands of leaves).
 
 #include <algorithm>
 #include <array>
@@ -113,7 +114,8 @@ public:
     // ---- poor triangles ------------------------------------------------------
     // Queues q at σ level `level` with shape rank `rank` (0 = worst shape).
     void push_poor(QueuedTriangle q, int level, int rank = 0) {
-        auto& l = levels_[level];
+        if (static_cast<std::size_t>(level) >= levels_.size()) levels_.resize(static_cast<std::size_t>(level) + 1);
+        auto& l = levels_[static_cast<std::size_t>(level)];
         if (!l) l = std::make_unique<Level>();
         l->ranks[rank].push_back(q);
         ++l->entries;
@@ -123,13 +125,17 @@ public:
     }
     // The lowest non-empty level, or -1.  (Stale entries count as entries.)
     int lowest_level() {
-        while (lowest_ < bucket_count && (!levels_[lowest_] || levels_[lowest_]->entries == 0)) ++lowest_;
-        return lowest_ < bucket_count ? lowest_ : -1;
+        const int used = static_cast<int>(levels_.size());
+        while (lowest_ < used && (!levels_[lowest_] || levels_[lowest_]->entries == 0)) ++lowest_;
+        if (lowest_ < used) return lowest_;
+        lowest_ = bucket_count;
+        return -1;
     }
     // Takes from level j the newest entry of the worst shape rank (stored in
     // *rank when asked).
     bool pop_poor(int j, QueuedTriangle& q, int* rank = nullptr) {
-        Level* l = levels_[j].get();
+        if (j < 0 || static_cast<std::size_t>(j) >= levels_.size()) return false;
+        Level* l = levels_[static_cast<std::size_t>(j)].get();
         if (!l || l->entries == 0) return false;
         while (l->ranks[l->lowest_rank].empty()) ++l->lowest_rank;
         if (rank != nullptr) *rank = l->lowest_rank;
@@ -158,7 +164,7 @@ public:
     // its children keeps its node, but never queues anything again).  Any
     // entries left are dropped.
     void release() {
-        levels_ = {};
+        std::vector<std::unique_ptr<Level>>().swap(levels_);
         lowest_ = bucket_count;
         poor_entries_ = 0;
         std::vector<QueuedSubsegment>().swap(subsegments_);
@@ -192,7 +198,7 @@ private:
         int lowest_rank = rank_count;
         std::size_t entries = 0;
     };
-    std::array<std::unique_ptr<Level>, bucket_count> levels_;
+    std::vector<std::unique_ptr<Level>> levels_;  // by σ level, up to the deepest used
     int lowest_ = bucket_count;
     std::size_t poor_entries_ = 0;
     std::vector<QueuedSubsegment> subsegments_;

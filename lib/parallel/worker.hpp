@@ -168,7 +168,7 @@ private:
     void defer(DeferredTriangle e, LeafState& leaf);
     // Whether e's triangle is the one listed (its slot's generation has not moved on).
     bool alive(DeferredTriangle e) const { return mesh_.triangle(e.t).load_generation() == e.generation; }
-    // Asks for triangle t's record ahead of reading it (deferred_list.hpp: look_ahead).
+    // Asks for triangle t's slot ahead of reading it (deferred_list.hpp: look_ahead).
     void prefetch(mesh::TriangleId t) const { __builtin_prefetch(&mesh_.triangle(t)); }
     // The same for the points of e's corners, if e is alive (its corners are
     // read only then: the slot of a dead one may be another worker's now).

@@ -33,40 +33,56 @@ std::vector<std::string> quality_statistics(const MeshArrays& mesh) {
     const io::EleSource triangles = triangle_source(mesh);
     std::uint32_t corners[6];
     std::vector<double> attributes(triangles.attribute_count);
-    for (std::size_t t = 0; t < triangles.count; ++t) {
-        triangles.next(corners, attributes.data());
-        std::array<double, 3> px, py, edge2;  // edge2[k]: squared length of the edge opposite corner k
-        for (std::size_t k = 0; k < 3; ++k) {
-            const std::size_t v = corners[k];
-            px[k] = xy[2 * v];
-            py[k] = xy[2 * v + 1];
+    // The triangles come in mesh order and their corners lie anywhere in
+    // the node array (hundreds of megabytes for a large mesh): a batch's
+    // corners are read first and their coordinates asked for, so that the
+    // cache misses overlap instead of stalling each triangle in turn.
+    constexpr std::size_t batch = 256;
+    std::array<std::uint32_t, 3 * batch> batch_corners;
+    for (std::size_t first = 0; first < triangles.count; first += batch) {
+        const std::size_t n = std::min(batch, triangles.count - first);
+        for (std::size_t i = 0; i < n; ++i) {
+            triangles.next(corners, attributes.data());
+            for (std::size_t k = 0; k < 3; ++k) {
+                batch_corners[3 * i + k] = corners[k];
+                __builtin_prefetch(&xy[2 * std::size_t{corners[k]}]);
+            }
         }
-        for (std::size_t k = 0; k < 3; ++k) {
-            const double dx = px[(k + 2) % 3] - px[(k + 1) % 3], dy = py[(k + 2) % 3] - py[(k + 1) % 3];
-            edge2[k] = dx * dx + dy * dy;
-        }
-        const double twice_area = std::abs((px[1] - px[0]) * (py[2] - py[0]) - (px[2] - px[0]) * (py[1] - py[0]));
-        const double longest2 = std::max({edge2[0], edge2[1], edge2[2]});
-        min_area = std::min(min_area, twice_area / 2);
-        max_area = std::max(max_area, twice_area / 2);
-        min_edge2 = std::min({min_edge2, edge2[0], edge2[1], edge2[2]});
-        max_edge2 = std::max(max_edge2, longest2);
-        // The shortest altitude stands on the longest edge.
-        const double altitude = twice_area / std::sqrt(longest2);
-        min_altitude = std::min(min_altitude, altitude);
-        const double ratio = std::sqrt(longest2) / altitude;
-        max_ratio = std::max(max_ratio, ratio);
-        std::size_t bin = 0;
-        while (bin + 1 < ratio_bounds.size() && ratio > ratio_bounds[bin]) ++bin;
-        ++ratio_histogram[bin];
-        for (std::size_t k = 0; k < 3; ++k) {
-            // The angle at corner k lies between the edges opposite k+1 and k+2.
-            const double a2 = edge2[(k + 1) % 3], b2 = edge2[(k + 2) % 3], c2 = edge2[k];
-            const double cosine = std::clamp((a2 + b2 - c2) / (2 * std::sqrt(a2 * b2)), -1.0, 1.0);
-            const double degrees = std::acos(cosine) * 180 / std::numbers::pi;
-            min_angle = std::min(min_angle, degrees);
-            max_angle = std::max(max_angle, degrees);
-            ++angle_histogram[std::min<std::size_t>(17, static_cast<std::size_t>(degrees / 10))];
+        for (std::size_t i = 0; i < n; ++i) {
+            std::array<double, 3> px, py, edge2;  // edge2[k]: squared length of the edge opposite corner k
+            for (std::size_t k = 0; k < 3; ++k) {
+                const std::size_t v = batch_corners[3 * i + k];
+                px[k] = xy[2 * v];
+                py[k] = xy[2 * v + 1];
+            }
+            for (std::size_t k = 0; k < 3; ++k) {
+                const double dx = px[(k + 2) % 3] - px[(k + 1) % 3], dy = py[(k + 2) % 3] - py[(k + 1) % 3];
+                edge2[k] = dx * dx + dy * dy;
+            }
+            const double twice_area =
+                std::abs((px[1] - px[0]) * (py[2] - py[0]) - (px[2] - px[0]) * (py[1] - py[0]));
+            const double longest2 = std::max({edge2[0], edge2[1], edge2[2]});
+            min_area = std::min(min_area, twice_area / 2);
+            max_area = std::max(max_area, twice_area / 2);
+            min_edge2 = std::min({min_edge2, edge2[0], edge2[1], edge2[2]});
+            max_edge2 = std::max(max_edge2, longest2);
+            // The shortest altitude stands on the longest edge.
+            const double altitude = twice_area / std::sqrt(longest2);
+            min_altitude = std::min(min_altitude, altitude);
+            const double ratio = std::sqrt(longest2) / altitude;
+            max_ratio = std::max(max_ratio, ratio);
+            std::size_t bin = 0;
+            while (bin + 1 < ratio_bounds.size() && ratio > ratio_bounds[bin]) ++bin;
+            ++ratio_histogram[bin];
+            for (std::size_t k = 0; k < 3; ++k) {
+                // The angle at corner k lies between the edges opposite k+1 and k+2.
+                const double a2 = edge2[(k + 1) % 3], b2 = edge2[(k + 2) % 3], c2 = edge2[k];
+                const double cosine = std::clamp((a2 + b2 - c2) / (2 * std::sqrt(a2 * b2)), -1.0, 1.0);
+                const double degrees = std::acos(cosine) * 180 / std::numbers::pi;
+                min_angle = std::min(min_angle, degrees);
+                max_angle = std::max(max_angle, degrees);
+                ++angle_histogram[std::min<std::size_t>(17, static_cast<std::size_t>(degrees / 10))];
+            }
         }
     }
     if (triangles.count == 0) return {};

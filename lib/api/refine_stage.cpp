@@ -73,7 +73,7 @@ std::vector<std::string> refine(mesh::Mesh& mesh, const refine::RefineSettings& 
     // The refiners' queues, lists and quadtree are freed now, much of it in
     // the worker threads' own malloc arenas, which keep freed memory
     // mapped.  The output arrays come next and would be mapped on top of
-    // it, raising the peak by what refinement had in use (about 200 MB on
+    // it, raising the peak by what refinement had in use (about 140 MB on
     // the graded pipe with -j2): give it back first.
     malloc_trim(0);
 #endif

@@ -60,8 +60,9 @@ bool can_split_at(const Mesh& mesh, EdgeRef subsegment, const Point& p);
 // buffer.created, until each edge that is not a subsegment is locally
 // Delaunay (exact incircle).  Triangles a flip changes are appended to
 // `created`; those with a user tag are saved (appended) in `tagged_gone` as
-// they were before the flip, and their tags cleared.  For repairs after a change that can break the constrained
-// Delaunay property only locally (a bent subsegment, a removed constraint).
+// they were before the flip, and their tags cleared.  For repairs after a
+// change that can break the constrained Delaunay property only locally (a
+// bent subsegment, a removed constraint).
 void lawson_flips(Mesh& mesh, InsertBuffer& buffer);
 
 InsertResult split_subsegment(Pool& pool, EdgeRef subsegment, const Point& p, VertexKind kind,

@@ -69,11 +69,15 @@ private:
 };
 
 // How far ahead of the entry being read drain() and sweep() show entries to
-// their `ahead` callback: the triangles a list names lie anywhere in a
-// mesh of hundreds of megabytes, so each read misses the caches; asking
-// for the memory of an entry this many steps early lets those misses
-// overlap instead of following one another.
+// their `ahead` callback (and drain() to its `near` callback, half as far):
+// the triangles a list names lie anywhere in a mesh of hundreds of
+// megabytes, so each read misses the caches; asking for the memory of an
+// entry this many steps early lets those misses overlap instead of
+// following one another.  Two distances serve a reader that needs memory
+// found through the entry's (the triangle's corners): by the time an entry
+// is near, its triangle has mostly arrived.
 inline constexpr std::uint32_t look_ahead = 8;
+inline constexpr std::uint32_t look_near = look_ahead / 2;
 
 class DeferredList {
 public:
@@ -97,10 +101,11 @@ public:
 
     // Calls f on every entry and empties the list, giving each block back
     // as soon as it is read (f may push onto other lists from the same
-    // pool).  ahead(e) is called on each entry look_ahead entries before
-    // f(e) (within a block), for prefetching.
-    template <class F, class Ahead>
-    void drain(F&& f, Ahead&& ahead, BlockPool& pool) {
+    // pool).  For prefetching, within a block, ahead(e) is called on each
+    // entry look_ahead entries before f(e), and near(e) look_near entries
+    // before (not for a block's first look_near entries).
+    template <class F, class Ahead, class Near>
+    void drain(F&& f, Ahead&& ahead, Near&& near, BlockPool& pool) {
         DeferredBlock* b = head_;
         head_ = nullptr;
         size_ = 0;
@@ -108,6 +113,7 @@ public:
             show_ahead(*b, ahead);
             for (std::uint32_t i = 0; i < b->size; ++i) {
                 if (i + look_ahead < b->size) ahead(b->items[i + look_ahead]);
+                if (i + look_near < b->size) near(b->items[i + look_near]);
                 f(b->items[i]);
             }
             DeferredBlock* next = b->next;

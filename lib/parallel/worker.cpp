@@ -139,15 +139,15 @@ void Worker::uncount(const mesh::TaggedTriangle& was) {
 void Worker::flush_pending() {
     if (pending_.empty()) return;
     LeafState& leaf = *tree_.node(current_).state;  // (pending only while a run goes on)
-    // Prefetching as in hand_down_deferred: the triangle look_ahead entries
-    // early, the corners of one that will be counted half way.
+    // Prefetching as DeferredList::drain does for hand_down_deferred: each
+    // triangle look_ahead entries early, the corners of one that will be
+    // counted look_near entries early.
     const std::size_t n = pending_.size();
-    constexpr std::size_t half = look_ahead / 2;
     for (std::size_t i = 0; i < n && i < look_ahead; ++i) prefetch(pending_[i].t);
     for (std::size_t i = 0; i < n; ++i) {
         if (i + look_ahead < n) prefetch(pending_[i + look_ahead].t);
-        if (i + half < n && !pending_[i + half].deferrable)
-            prefetch_corners({pending_[i + half].t, pending_[i + half].generation});
+        if (i + look_near < n && !pending_[i + look_near].deferrable)
+            prefetch_corners({pending_[i + look_near].t, pending_[i + look_near].generation});
         const Pending& p = pending_[i];
         const mesh::Triangle& r = mesh_.triangle(p.t);
         // Created and killed (or changed by a flip) in this run: never counted.
@@ -190,12 +190,6 @@ void Worker::hand_down_deferred(NodeId leaf) {
     Square squares[4];
     for (int q = 0; q < 4; ++q) squares[q] = tree_.square(n.child(q));
     const Point middle{squares[3].x0, squares[3].y0};
-    // Two stages of prefetching: an entry's triangle when it is shown
-    // (look_ahead entries early), its corners' points half way (the
-    // triangle has arrived by then, most of the time).
-    constexpr std::uint32_t half = look_ahead / 2;
-    DeferredTriangle shown[half];
-    std::uint32_t shown_count = 0;
     n.state->deferred.drain(
         [&](const DeferredTriangle& e) {
             if (!alive(e)) return;
@@ -205,12 +199,7 @@ void Worker::hand_down_deferred(NodeId leaf) {
             const int q = (c.centre.x >= middle.x ? 1 : 0) | (c.centre.y >= middle.y ? 2 : 0);
             count_or_defer(e, c, n.level + 1, squares[q], *tree_.node(n.child(q)).state);
         },
-        [&](const DeferredTriangle& e) {
-            prefetch(e.t);
-            DeferredTriangle& slot = shown[shown_count++ % half];
-            if (shown_count > half) prefetch_corners(slot);
-            slot = e;
-        },
+        [&](const DeferredTriangle& e) { prefetch(e.t); }, [&](const DeferredTriangle& e) { prefetch_corners(e); },
         deferred_blocks_);
 }
 

@@ -19,12 +19,21 @@
 namespace gpdr::parallel {
 namespace {
 
-// The look-ahead callback of sweep and drain: sees each entry exactly once,
-// before the entry itself is read.
+// The look-ahead callbacks of sweep and drain: `ahead` sees each entry
+// exactly once, before the entry itself is read; drain's `near` sees an
+// entry at most once, after `ahead` and before it is read.
 struct AheadLog {
-    std::vector<std::uint32_t> shown;
+    std::vector<std::uint32_t> shown, near_shown;
     std::vector<bool> read;
-    bool early = true;  // every entry was shown before it was read
+    bool early = true;       // every entry was shown before it was read
+    bool near_right = true;  // every near entry was shown before, once, and not yet read
+    void near(const DeferredTriangle& e) {
+        const std::uint32_t i = mesh::index(e.t);
+        if (std::find(shown.begin(), shown.end(), i) == shown.end() ||
+            std::find(near_shown.begin(), near_shown.end(), i) != near_shown.end() || (i < read.size() && read[i]))
+            near_right = false;
+        near_shown.push_back(i);
+    }
     void show(const DeferredTriangle& e) {
         shown.push_back(mesh::index(e.t));
         if (mesh::index(e.t) < read.size() && read[mesh::index(e.t)]) early = false;
@@ -101,11 +110,15 @@ TEST_CASE("deferred lists keep, sweep and drain what a vector would", "[parallel
             drained.push_back(mesh::index(e.t));
             (mesh::index(e.t) % 2 == 0 ? even : odd).push(e, pool);
         },
-        [&](const DeferredTriangle& e) { shown.show(e); }, pool);
+        [&](const DeferredTriangle& e) { shown.show(e); }, [&](const DeferredTriangle& e) { shown.near(e); }, pool);
     std::sort(drained.begin(), drained.end());
     CHECK(drained == kept);
     CHECK(shown.sorted_shown() == kept);
     CHECK(shown.early);
+    CHECK(shown.near_right);
+    // All but the first look_near entries of each block (a few blocks here).
+    const std::size_t blocks = (kept.size() + DeferredBlock::capacity - 1) / DeferredBlock::capacity + 1;
+    CHECK(shown.near_shown.size() + blocks * look_near >= kept.size());
     CHECK(list.size() == 0);
     CHECK(even.size() + odd.size() == kept.size());
     for (std::uint32_t i : contents(even)) CHECK(i % 2 == 0);

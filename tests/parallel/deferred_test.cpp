@@ -1,14 +1,16 @@
 // The pieces the deferred counting rests on: the block lists of deferred
 // triangles (sweep and drain against a plain vector), the quadrant path a
 // queue entry carries through splits (Leaf::where against the quadtree's own
-// child squares), and the quadtree's division-free level test against
-// level_of.
+// child squares), the level a triangle is counted at (Quadtree::level_of
+// against long double arithmetic), and the quadtree's division-free level
+// test against level_of.
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -153,6 +155,43 @@ TEST_CASE("a queue entry's quadrant path follows the quadtree's child squares", 
             node = tree.child(node, expected, alloc);
         }
         CHECK(refine::Leaf::path_used_up(where));  // used up: the split measures the entry again
+    }
+}
+
+// ℓ_k > 4r for the level k that level_of gives, and ℓ_(k+1) > 4r fails
+// but for the 2^-30 it gives away; the ends: -1 for r >= ℓ_root / 4 and
+// max_level + 1 below the deepest level (and for zero, negative, NaN).
+TEST_CASE("level_of is the deepest level whose side exceeds 4r, but for a relative 2^-30", "[parallel][deferred]") {
+    std::mt19937_64 random(99);
+    std::uniform_real_distribution<double> exponent(-2.0, 34.0);
+    for (const double side : {3.0, 7.0, 1e-3, 12345.678, 0.1}) {
+        Quadtree tree(-1.5, 2.25, side);
+        // ℓ_j² / 16r², in long double (the squares of side 2^-j are exact there).
+        const auto over = [&](int j, double rr) {
+            const long double l = std::ldexp(static_cast<long double>(side), -j);
+            return l * l / (16.0L * rr);
+        };
+        for (int trial = 0; trial < 100000; ++trial) {
+            const double r = side * std::exp2(-exponent(random));
+            const double rr = r * r;
+            const int k = tree.level_of(rr);
+            REQUIRE(k >= -1);
+            REQUIRE(k <= max_level + 1);
+            if (k >= 0 && k <= max_level) REQUIRE(over(k, rr) > 1.0L);
+            if (k == -1) REQUIRE(over(0, rr) <= 1.0L + 0x1p-28L);
+            if (k <= max_level) REQUIRE(over(k + 1, rr) <= 1.0L + 0x1p-28L);
+            if (k == max_level + 1) REQUIRE(over(max_level + 1, rr) > 1.0L - 0x1p-28L);
+        }
+        // Exactly on a level boundary (ℓ_j = 4r): the level above (S is shrunk).
+        for (int j = 0; j <= max_level + 1; ++j) {
+            const double rr = std::ldexp(side * side / 16, -2 * j);
+            CHECK(tree.level_of(rr) == j - 1);
+        }
+        CHECK(tree.level_of(0.0) == max_level + 1);
+        CHECK(tree.level_of(-1.0) == max_level + 1);
+        CHECK(tree.level_of(std::nan("")) == max_level + 1);
+        CHECK(tree.level_of(std::numeric_limits<double>::infinity()) == -1);
+        CHECK(tree.level_of(std::numeric_limits<double>::denorm_min()) == max_level + 1);
     }
 }
 

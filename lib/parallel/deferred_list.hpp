@@ -68,12 +68,11 @@ private:
     DeferredBlock* free_ = nullptr;
 };
 
-// How far ahead of the entry being read drain() and sweep() show entries to
-// their `ahead` callback (and drain() to its `near` callback, half as far):
-// the triangles a list names lie anywhere in a mesh of hundreds of
-// megabytes, so each read misses the caches; asking for the memory of an
-// entry this many steps early lets those misses overlap instead of
-// following one another.  Two distances serve a reader that needs memory
+// How far ahead of the entry being read drain() shows entries to its `ahead`
+// callback (and to its `near` callback, half as far): the triangles a list
+// names lie anywhere in a mesh of hundreds of megabytes, so each read misses
+// the caches; asking for the memory of an entry this many steps early lets
+// those misses overlap instead of following one another.  Two distances serve a reader that needs memory
 // found through the entry's (the triangle's corners): by the time an entry
 // is near, its triangle has mostly arrived.
 inline constexpr std::uint32_t look_ahead = 8;
@@ -119,39 +118,6 @@ public:
             DeferredBlock* next = b->next;
             pool.give(b);
             b = next;
-        }
-    }
-
-    // Keeps the entries for which keep(entry) holds, packed into the first
-    // blocks of the chain (writing never overtakes reading); the blocks left
-    // empty go back to the pool.  `ahead` as for drain().
-    template <class Keep, class Ahead>
-    void sweep(Keep&& keep, Ahead&& ahead, BlockPool& pool) {
-        if (head_ == nullptr) return;
-        DeferredBlock* out = head_;
-        std::uint32_t at = 0;
-        size_ = 0;
-        for (DeferredBlock* b = head_; b != nullptr; b = b->next) {
-            show_ahead(*b, ahead);
-            for (std::uint32_t i = 0; i < b->size; ++i) {
-                if (i + look_ahead < b->size) ahead(b->items[i + look_ahead]);
-                if (!keep(b->items[i])) continue;
-                if (at == DeferredBlock::capacity) {
-                    out->size = at;
-                    out = out->next;
-                    at = 0;
-                }
-                out->items[at++] = b->items[i];
-                ++size_;
-            }
-        }
-        out->size = at;
-        DeferredBlock* rest = out->next;
-        out->next = nullptr;
-        while (rest != nullptr) {
-            DeferredBlock* next = rest->next;
-            pool.give(rest);
-            rest = next;
         }
     }
 

@@ -160,21 +160,30 @@ public:
         return radius_squared <= deferrable_below_[leaf_level] && radius_squared >= smallest_counted_;
     }
 
+    // A square as disk_inside reads it: its centre, and how far from the
+    // centre a disk may reach in x and in y, less twice the rounding margin.
+    struct Room {
+        double x, y, reach;
+    };
+    Room room(const Square& s) const {
+        const double half = 0.5 * s.side;
+        return {s.x0 + half, s.y0 + half, half - 2 * rounding_margin_};
+    }
     // Whether the closed disk (centre c, radius² radius_squared) lies inside
-    // square s with room to spare: then every cell, at any level, that the
-    // counters would give the disk (cell_record) lies inside s, whatever the
-    // rounding of its cell coordinates.  Conservative: a disk that only
-    // just fits is reported as not inside.  (No square root: the margin is
-    // taken off the distances to the sides, which are then compared
-    // squared.)
-    bool disk_inside(const Square& s, const Point& c, double radius_squared) const {
-        const double gaps[4] = {c.x - s.x0, s.x0 + s.side - c.x, c.y - s.y0, s.y0 + s.side - c.y};
+    // the square of `room` with room to spare: then every cell, at any level,
+    // that the counters would give the disk (cell_record) lies inside the
+    // square, whatever the rounding of its cell coordinates.  Conservative:
+    // a disk that only just fits is reported as not inside.  (Asked of
+    // every triangle a worker creates: no square root, no branch; the
+    // distances from the centre to the nearer sides are compared squared.
+    // The rounding of the centre's offset is far below the margin, the
+    // second one taken off the reach.)
+    bool disk_inside(const Room& room, const Point& c, double radius_squared) const {
+        const double gx = room.reach - std::abs(c.x - room.x);
+        const double gy = room.reach - std::abs(c.y - room.y);
         const double rr = radius_squared * (1.0 + 0x1p-40);
-        for (double gap : gaps) {
-            const double room = gap - rounding_margin_;
-            if (!(room > 0) || !(room * room > rr)) return false;
-        }
-        return true;
+        // (NaN anywhere makes a comparison false.)
+        return (gx > 0) & (gy > 0) & (gx * gx > rr) & (gy * gy > rr);
     }
 
     // ℓe(leaf) (see above).

@@ -219,7 +219,7 @@ void verify_quadtree(const mesh::Mesh& mesh, Quadtree& tree, std::vector<std::st
             const NodeId l = listed->second;
             const int k = tree.level_of(c.radius_squared);
             if (counted || record == 0 || k < tree.node(l).level + 2 ||
-                !tree.disk_inside(tree.square(l), c.centre, c.radius_squared))
+                !tree.disk_inside(tree.room(tree.square(l)), c.centre, c.radius_squared))
                 problem(fmt::format("triangle {} (level {}, tag {}) is deferred in leaf {} of level {}", i, k,
                                     int(t.user_tag), l, int(tree.node(l).level)));
         } else if (!counted) {

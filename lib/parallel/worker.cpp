@@ -138,36 +138,31 @@ void Worker::uncount(const mesh::TaggedTriangle& was) {
 
 void Worker::flush_pending() {
     if (pending_.empty()) return;
-    LeafState& leaf = *tree_.node(current_).state;  // (pending only while a run goes on)
     // Prefetching as DeferredList::drain does for hand_down_deferred: each
-    // triangle look_ahead entries early, the corners of one that will be
-    // counted look_near entries early.
+    // triangle look_ahead entries early, its corners look_near entries early.
     const std::size_t n = pending_.size();
     for (std::size_t i = 0; i < n && i < look_ahead; ++i) prefetch(pending_[i].t);
     for (std::size_t i = 0; i < n; ++i) {
         if (i + look_ahead < n) prefetch(pending_[i + look_ahead].t);
-        if (i + look_near < n && !pending_[i + look_near].deferrable)
-            prefetch_corners({pending_[i + look_near].t, pending_[i + look_near].generation});
+        if (i + look_near < n) prefetch_corners({pending_[i + look_near].t, pending_[i + look_near].generation});
         const Pending& p = pending_[i];
         const mesh::Triangle& r = mesh_.triangle(p.t);
         // Created and killed (or changed by a flip) in this run: never counted.
         if (r.load_generation() != p.generation) continue;
-        if (p.deferrable)
-            defer({p.t, p.generation}, leaf);
-        else
-            count(p.t, geometry::circumcircle(mesh_.point(r.v[0]), mesh_.point(r.v[1]), mesh_.point(r.v[2])));
+        count(p.t, geometry::circumcircle(mesh_.point(r.v[0]), mesh_.point(r.v[1]), mesh_.point(r.v[2])));
     }
     pending_.clear();
 }
 
-bool Worker::may_defer(const geometry::Circle& c, int leaf_level, const Square& leaf_square) const {
-    return tree_.two_levels_below(c.radius_squared, leaf_level) &&
-           tree_.disk_inside(leaf_square, c.centre, c.radius_squared);
+bool Worker::may_defer(const geometry::Circle& c, int leaf_level, const Quadtree::Room& leaf_room) const {
+    // (Both asked, without a branch: most triangles pass both.)
+    return tree_.two_levels_below(c.radius_squared, leaf_level) &
+           tree_.disk_inside(leaf_room, c.centre, c.radius_squared);
 }
 
-void Worker::count_or_defer(DeferredTriangle e, const geometry::Circle& c, int leaf_level, const Square& leaf_square,
-                            LeafState& leaf) {
-    if (may_defer(c, leaf_level, leaf_square))
+void Worker::count_or_defer(DeferredTriangle e, const geometry::Circle& c, int leaf_level,
+                            const Quadtree::Room& leaf_room, LeafState& leaf) {
+    if (may_defer(c, leaf_level, leaf_room))
         defer(e, leaf);
     else
         count(e.t, c);
@@ -176,20 +171,16 @@ void Worker::count_or_defer(DeferredTriangle e, const geometry::Circle& c, int l
 void Worker::defer(DeferredTriangle e, LeafState& leaf) {
     // (Its tag is 0 already: new, or listed in the parent.)
     leaf.deferred.push(e, deferred_blocks_);
-    if (leaf.deferred.size() >= leaf.deferred_sweep_at) {
-        leaf.deferred.sweep([&](const DeferredTriangle& e) { return alive(e); },
-                            [&](const DeferredTriangle& e) { prefetch(e.t); }, deferred_blocks_);
-        leaf.deferred_sweep_at = std::max<std::size_t>(4 * DeferredBlock::capacity, 2 * leaf.deferred.size());
-    }
 }
 
 // Line 13's upkeep of the deferred lists: each live triangle of the leaf's
 // list goes to the child whose square holds it, or is counted now.
 void Worker::hand_down_deferred(NodeId leaf) {
     const Node& n = tree_.node(leaf);
-    Square squares[4];
-    for (int q = 0; q < 4; ++q) squares[q] = tree_.square(n.child(q));
-    const Point middle{squares[3].x0, squares[3].y0};
+    Quadtree::Room rooms[4];
+    for (int q = 0; q < 4; ++q) rooms[q] = tree_.room(tree_.square(n.child(q)));
+    const Square last = tree_.square(n.child(3));
+    const Point middle{last.x0, last.y0};
     n.state->deferred.drain(
         [&](const DeferredTriangle& e) {
             if (!alive(e)) return;
@@ -197,7 +188,7 @@ void Worker::hand_down_deferred(NodeId leaf) {
             const geometry::Circle c =
                 geometry::circumcircle(mesh_.point(r.v[0]), mesh_.point(r.v[1]), mesh_.point(r.v[2]));
             const int q = (c.centre.x >= middle.x ? 1 : 0) | (c.centre.y >= middle.y ? 2 : 0);
-            count_or_defer(e, c, n.level + 1, squares[q], *tree_.node(n.child(q)).state);
+            count_or_defer(e, c, n.level + 1, rooms[q], *tree_.node(n.child(q)).state);
         },
         [&](const DeferredTriangle& e) { prefetch(e.t); }, [&](const DeferredTriangle& e) { prefetch_corners(e); },
         deferred_blocks_);
@@ -225,9 +216,10 @@ void Worker::triangle_created(mesh::TriangleId t, const geometry::Circle& circum
         count(t, circumcircle);
         return;
     }
-    // Whether it may be deferred is decided now, while the circle is at
-    // hand (the leaf stays the same until the flush).
-    pending_.push_back({t, r.generation, may_defer(circumcircle, current_level_, current_square_)});
+    if (may_defer(circumcircle, current_level_, current_room_))
+        defer({t, r.generation}, *current_state_);
+    else
+        pending_.push_back({t, r.generation});
 }
 
 // ---- routing ---------------------------------------------------------------------
@@ -350,8 +342,9 @@ bool Worker::should_split(const Node& n, LeafState& state) {
 bool Worker::run(NodeId leaf, std::int32_t tag) {
     const auto t0 = Clock::now();
     current_ = leaf;
-    current_square_ = tree_.square(leaf);
+    current_room_ = tree_.room(tree_.square(leaf));
     current_level_ = tree_.node(leaf).level;
+    current_state_ = tree_.node(leaf).state;
     tag_ = tag;
     Node& n = tree_.node(leaf);
     LeafState& state = *n.state;

@@ -1,9 +1,9 @@
 // The pieces the deferred counting rests on: the block lists of deferred
-// triangles (sweep and drain against a plain vector), the quadrant path a
+// triangles (push and drain against a plain vector), the quadrant path a
 // queue entry carries through splits (Leaf::where against the quadtree's own
 // child squares), the level a triangle is counted at (Quadtree::level_of
-// against long double arithmetic), and the quadtree's division-free level
-// test against level_of.
+// against long double arithmetic), the quadtree's division-free level test
+// against level_of, and its disk-inside-a-square test.
 
 #include <catch2/catch.hpp>
 
@@ -21,9 +21,9 @@
 namespace gpdr::parallel {
 namespace {
 
-// The look-ahead callbacks of sweep and drain: `ahead` sees each entry
-// exactly once, before the entry itself is read; drain's `near` sees an
-// entry at most once, after `ahead` and before it is read.
+// The look-ahead callbacks of drain: `ahead` sees each entry exactly once,
+// before the entry itself is read; `near` sees an entry at most once, after
+// `ahead` and before it is read.
 struct AheadLog {
     std::vector<std::uint32_t> shown, near_shown;
     std::vector<bool> read;
@@ -59,7 +59,7 @@ std::vector<std::uint32_t> contents(const DeferredList& list) {
     return out;
 }
 
-TEST_CASE("deferred lists keep, sweep and drain what a vector would", "[parallel][deferred]") {
+TEST_CASE("deferred lists keep and drain what a vector would", "[parallel][deferred]") {
     BlockPool pool;
     DeferredList list;
     std::vector<std::uint32_t> expected;
@@ -70,37 +70,6 @@ TEST_CASE("deferred lists keep, sweep and drain what a vector would", "[parallel
     }
     CHECK(list.size() == n);
     CHECK(contents(list) == expected);
-
-    // Keep one entry in three: the survivors are packed, the emptied blocks
-    // go back to the pool and come out again for the next pushes.
-    AheadLog swept;
-    list.sweep(
-        [&](const DeferredTriangle& e) {
-            swept.reading(e);
-            return mesh::index(e.t) % 3 == 0;
-        },
-        [&](const DeferredTriangle& e) { swept.show(e); }, pool);
-    CHECK(swept.sorted_shown() == expected);
-    CHECK(swept.early);
-    std::vector<std::uint32_t> kept;
-    for (std::uint32_t i : expected)
-        if (i % 3 == 0) kept.push_back(i);
-    CHECK(list.size() == kept.size());
-    CHECK(contents(list) == kept);
-    for (std::uint32_t i = n; i < n + 2 * DeferredBlock::capacity; ++i) {
-        list.push({mesh::TriangleId{i}, 0}, pool);
-        kept.push_back(i);
-    }
-    CHECK(contents(list) == kept);
-
-    // Sweeping everything away leaves an empty list that still takes pushes.
-    DeferredList other;
-    for (std::uint32_t i = 0; i < 10; ++i) other.push({mesh::TriangleId{i}, 0}, pool);
-    other.sweep([](const DeferredTriangle&) { return false; }, [](const DeferredTriangle&) {}, pool);
-    CHECK(other.size() == 0);
-    CHECK(contents(other).empty());
-    other.push({mesh::TriangleId{5}, 0}, pool);
-    CHECK(contents(other) == std::vector<std::uint32_t>{5});
 
     // Draining into two lists while the blocks are given back one by one.
     DeferredList even, odd;
@@ -114,17 +83,23 @@ TEST_CASE("deferred lists keep, sweep and drain what a vector would", "[parallel
         },
         [&](const DeferredTriangle& e) { shown.show(e); }, [&](const DeferredTriangle& e) { shown.near(e); }, pool);
     std::sort(drained.begin(), drained.end());
-    CHECK(drained == kept);
-    CHECK(shown.sorted_shown() == kept);
+    CHECK(drained == expected);
+    CHECK(shown.sorted_shown() == expected);
     CHECK(shown.early);
     CHECK(shown.near_right);
     // All but the first look_near entries of each block (a few blocks here).
-    const std::size_t blocks = (kept.size() + DeferredBlock::capacity - 1) / DeferredBlock::capacity + 1;
-    CHECK(shown.near_shown.size() + blocks * look_near >= kept.size());
+    const std::size_t blocks = (expected.size() + DeferredBlock::capacity - 1) / DeferredBlock::capacity + 1;
+    CHECK(shown.near_shown.size() + blocks * look_near >= expected.size());
     CHECK(list.size() == 0);
-    CHECK(even.size() + odd.size() == kept.size());
+    CHECK(even.size() + odd.size() == expected.size());
     for (std::uint32_t i : contents(even)) CHECK(i % 2 == 0);
     for (std::uint32_t i : contents(odd)) CHECK(i % 2 == 1);
+
+    // The drained list is empty and takes pushes again (from the blocks
+    // the drain gave back).
+    CHECK(contents(list).empty());
+    list.push({mesh::TriangleId{5}, 0}, pool);
+    CHECK(contents(list) == std::vector<std::uint32_t>{5});
 }
 
 // The child a split picks from an entry's quadrant path is the child whose
@@ -216,6 +191,45 @@ TEST_CASE("the division-free two-levels-below test agrees with level_of", "[para
             }
         }
     }
+}
+
+// disk_inside against long double arithmetic: never says inside for a disk
+// that reaches a side (or is not a number), and says it for every disk that
+// keeps clear of the sides by more than a hair.  Squares away from the
+// origin, as in a real quadtree, so that rounding of the centre's offset
+// would show.
+TEST_CASE("disk_inside is exact but for a hair, on the safe side", "[parallel][deferred]") {
+    Quadtree tree(1.0e6 - 3.5, -2.0e6, 4096.0);
+    NodeAllocator alloc;
+    std::mt19937_64 random(4242);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    NodeId node = Quadtree::root();
+    for (int level = 0; level < 12; ++level) {
+        const Square s = tree.square(node);
+        const Quadtree::Room room = tree.room(s);
+        for (int trial = 0; trial < 2000; ++trial) {
+            // Centres over the square and a little beyond; radii up to the square's side.
+            const geometry::Point c{s.x0 + (1.2 * unit(random) - 0.1) * s.side,
+                                    s.y0 + (1.2 * unit(random) - 0.1) * s.side};
+            const double r = unit(random) * unit(random) * s.side;
+            const long double lo_x = (long double)c.x - s.x0, hi_x = (long double)s.x0 + s.side - c.x;
+            const long double lo_y = (long double)c.y - s.y0, hi_y = (long double)s.y0 + s.side - c.y;
+            const long double gap = std::min({lo_x, hi_x, lo_y, hi_y}) - (long double)r;
+            const bool inside = tree.disk_inside(room, c, r * r);
+            if (inside) REQUIRE(gap > 0);
+            if (gap > 1e-9L * s.side) REQUIRE(inside);
+        }
+        node = tree.child(node, static_cast<int>(unit(random) * 4) & 3, alloc);
+    }
+    const Quadtree::Room room = tree.room(tree.square(Quadtree::root()));
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const geometry::Point middle{room.x, room.y};
+    CHECK(tree.disk_inside(room, middle, 1.0));
+    CHECK_FALSE(tree.disk_inside(room, {nan, room.y}, 1.0));
+    CHECK_FALSE(tree.disk_inside(room, {room.x, nan}, 1.0));
+    CHECK_FALSE(tree.disk_inside(room, middle, nan));
+    CHECK_FALSE(tree.disk_inside(room, middle, std::numeric_limits<double>::infinity()));
+    CHECK_FALSE(tree.disk_inside(room, middle, 2048.0 * 2048.0));  // touches all four sides
 }
 
 }  // namespace

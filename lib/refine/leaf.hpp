@@ -81,27 +81,38 @@ public:
     // `where` locates points in it.
     void set_corner(const geometry::Point& corner) {
         corner_ = corner;
+        cells_per_side_ = double(1u << where_levels) / side_;
         has_corner_ = true;
     }
     // The quadrants that hold p on the way down from this leaf's square, for
-    // where_levels levels: the quadrant q = (x half) | (y half) << 1 of the
-    // first split in bits 31-30, of the second in bits 29-28, ..., and in
-    // bits 3-0 how many levels are left (0: unknown, as for a leaf without
-    // a corner).  A point outside the square counts as in its nearest cell.
+    // where_levels levels: the cell of p in a grid of 2^where_levels cells a
+    // side, its column in bits 31-18 and its row in bits 17-4 (the first
+    // split's half is the top bit of each), and in bits 3-0 how many levels
+    // are left (0: unknown, as for a leaf without a corner).  A point
+    // outside the square counts as in its nearest cell.  (Column and row
+    // side by side rather than interleaved: `where` is computed for every
+    // poor triangle a worker queues, and read only for those a split finds.)
     static constexpr std::uint32_t where_levels = 14;
     std::uint32_t where(const geometry::Point& p) const {
         if (!has_corner_) return 0;
-        constexpr double cells = double(1u << where_levels);
-        const double scale = cells / side_;
+        constexpr double last = double((1u << where_levels) - 1);
         const auto cell = [&](double f) {
             // std::max(0.0, NaN) is 0.0: a point that is not a number lands in cell 0.
-            return static_cast<std::uint32_t>(static_cast<std::int64_t>(std::min(std::max(0.0, f), cells - 1)));
+            return static_cast<std::uint32_t>(static_cast<std::int64_t>(std::min(std::max(0.0, f), last)));
         };
-        return (interleave(cell((p.x - corner_.x) * scale), cell((p.y - corner_.y) * scale)) << 4) | where_levels;
+        return (cell((p.x - corner_.x) * cells_per_side_) << column_shift) |
+               (cell((p.y - corner_.y) * cells_per_side_) << row_shift) | where_levels;
     }
     // The first quadrant of `where`, and `where` as seen from that child.
-    static int first_quadrant(std::uint32_t where) { return static_cast<int>(where >> 30); }
-    static std::uint32_t in_child(std::uint32_t where) { return ((where << 2) & ~15u) | ((where & 15u) - 1); }
+    static int first_quadrant(std::uint32_t where) {
+        return static_cast<int>((where >> 31) | (((where >> (row_shift + where_levels - 1)) & 1u) << 1));
+    }
+    static std::uint32_t in_child(std::uint32_t where) {
+        constexpr std::uint32_t field = (1u << where_levels) - 1;
+        const std::uint32_t column = ((where >> column_shift) << 1) & field;
+        const std::uint32_t row = ((where >> row_shift) << 1) & field;
+        return (column << column_shift) | (row << row_shift) | ((where & 15u) - 1);
+    }
     // Whether no level is left in `where` (or it was never known).
     static bool path_used_up(std::uint32_t where) { return (where & 15u) == 0; }
 
@@ -178,20 +189,11 @@ public:
     std::vector<QueuedSubsegment> handed_off_subsegments;
 
 private:
-    // Bits 0-15 of x spread to the even bits of the result, of y to the odd.
-    static std::uint32_t interleave(std::uint32_t x, std::uint32_t y) {
-        const auto spread = [](std::uint32_t v) {
-            v = (v | (v << 8)) & 0x00FF00FFu;
-            v = (v | (v << 4)) & 0x0F0F0F0Fu;
-            v = (v | (v << 2)) & 0x33333333u;
-            return (v | (v << 1)) & 0x55555555u;
-        };
-        return spread(x) | (spread(y) << 1);
-    }
-
     double side_squared_;
     double side_;
+    static constexpr int row_shift = 4, column_shift = row_shift + where_levels;
     geometry::Point corner_{};
+    double cells_per_side_ = 0;  // 2^where_levels / ℓ
     bool has_corner_ = false;
     struct Level {
         std::array<std::vector<QueuedTriangle>, rank_count> ranks;

@@ -72,9 +72,10 @@ private:
 // callback (and to its `near` callback, half as far): the triangles a list
 // names lie anywhere in a mesh of hundreds of megabytes, so each read misses
 // the caches; asking for the memory of an entry this many steps early lets
-// those misses overlap instead of following one another.  Two distances serve a reader that needs memory
-// found through the entry's (the triangle's corners): by the time an entry
-// is near, its triangle has mostly arrived.
+// those misses overlap instead of following one another.  Two distances
+// serve a reader that needs memory found through the entry's (the
+// triangle's corners): by the time an entry is near, its triangle has
+// mostly arrived.
 inline constexpr std::uint32_t look_ahead = 8;
 inline constexpr std::uint32_t look_near = look_ahead / 2;
 

@@ -162,12 +162,12 @@ private:
     // level below them (or that straddle two children).  Nothing looks at
     // an entry before that: a listed triangle that dies costs its 8 bytes
     // until its leaf splits, or until refinement ends if it never does (at
-    // most 8 bytes per triangle ever made; 50 MB more peak on the pipe), and most of
-    // the final mesh is never counted at all.  (On the pipe the hand-downs
-    // read 22 million entries, half of them dead.  Holding new triangles in
-    // the pending list until the run ended, to list only the survivors,
-    // and sweeping dead entries out of growing lists read 39 and 31 million
-    // more.)
+    // most 8 bytes per triangle ever made; 50 MB more peak on the pipe),
+    // and most of the final mesh is never counted at all.  (On the pipe the
+    // hand-downs read 22 million entries, half of them dead.  Holding new
+    // triangles in the pending list until the run ended, to list only the
+    // survivors, and sweeping dead entries out of growing lists read 39 and
+    // 31 million more.)
     // Invariant: a live triangle is counted, pending, or listed in the one
     // leaf whose square holds it with room to spare (Quadtree::disk_inside)
     // at least two levels above it.

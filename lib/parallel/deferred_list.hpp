@@ -84,13 +84,26 @@ public:
     std::size_t size() const { return size_; }
 
     void push(DeferredTriangle e, BlockPool& pool) {
-        if (head_ == nullptr || head_->size == DeferredBlock::capacity) {
-            DeferredBlock* b = pool.take();
-            b->next = head_;
-            head_ = b;
-        }
+        if (head_ == nullptr || head_->size == DeferredBlock::capacity) [[unlikely]]
+            add_block(pool);
         head_->items[head_->size++] = e;
         ++size_;
+    }
+
+    // Takes over the entries of `from` (left empty) without reading them:
+    // its blocks are linked in as they are (in constant time when this list
+    // is empty, as a new leaf's is).
+    void take(DeferredList& from) {
+        if (from.head_ == nullptr) return;
+        if (head_ != nullptr) {
+            DeferredBlock* last = from.head_;
+            while (last->next != nullptr) last = last->next;
+            last->next = head_;
+        }
+        head_ = from.head_;
+        size_ += from.size_;
+        from.head_ = nullptr;
+        from.size_ = 0;
     }
 
     template <class F>
@@ -123,6 +136,13 @@ public:
     }
 
 private:
+    // (Out of line: push is made for every triangle a worker creates, and
+    // its inlined fast path stays small.)
+    [[gnu::noinline]] void add_block(BlockPool& pool) {
+        DeferredBlock* b = pool.take();
+        b->next = head_;
+        head_ = b;
+    }
     // The first entries of a block, before its first is read.
     template <class Ahead>
     static void show_ahead(const DeferredBlock& b, Ahead& ahead) {

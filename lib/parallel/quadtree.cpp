@@ -33,7 +33,7 @@ Quadtree::Quadtree(double x0, double y0, double side)
     // S / 4^(max_level+1) by as much gives q < 4^(max_level+1), so k <=
     // max_level.  (For m + 2 > max_level no triangle qualifies: limit 0.)
     const double s = shrunk_side_squared_over_16_;
-    for (int m = 0; m <= max_level; ++m)
+    for (int m = 0; m <= max_level + 1; ++m)
         deferrable_below_[m] = m + 2 <= max_level ? std::ldexp(s, -2 * (m + 2)) * (1 - 0x1p-40) : 0.0;
     smallest_counted_ = std::ldexp(s, -2 * (max_level + 1)) * (1 + 0x1p-40);
     NodeAllocator a;

@@ -155,7 +155,8 @@ public:
     // levels below a leaf of level leaf_level (level_of(radius_squared) >=
     // leaf_level + 2) and not too small to be counted at all (<= max_level);
     // conservative near the limits.  Two comparisons, no division: it is
-    // asked of every triangle a worker creates.
+    // asked of every triangle a worker creates.  (leaf_level may be
+    // max_level + 1, a child of the deepest leaves: nothing qualifies.)
     bool two_levels_below(double radius_squared, int leaf_level) const {
         return radius_squared <= deferrable_below_[leaf_level] && radius_squared >= smallest_counted_;
     }
@@ -232,7 +233,7 @@ private:
 
     double x0_, y0_, side_;
     double shrunk_side_squared_over_16_;  // ℓ_root² / 16 (1 - 2^-30)
-    double deferrable_below_[max_level + 1];  // two_levels_below's limits
+    double deferrable_below_[max_level + 2];  // two_levels_below's limits
     double smallest_counted_;
     // Far above the rounding error of a cell coordinate (cell_x of a disk's
     // extreme x or y, computed from coordinates of the root's magnitude).

@@ -197,15 +197,28 @@ void verify_quadtree(const mesh::Mesh& mesh, Quadtree& tree, std::vector<std::st
     std::vector<NodeId> stack;
     std::vector<NodeId> leaves;
     tree.leaves(leaves);
-    // The live entries of the deferred lists: slot -> leaf.
-    std::unordered_map<std::uint32_t, NodeId> deferred_in;
+    // The live entries of the deferred lists: slot -> the square it is
+    // deferred in (the leaf's, or its child's for the lists of the children).
+    struct DeferredIn {
+        NodeId leaf;
+        int level;
+        Square square;
+    };
+    std::unordered_map<std::uint32_t, DeferredIn> deferred_in;
     for (NodeId l : leaves) {
         if (tree.node(l).state == nullptr) continue;
-        tree.node(l).state->deferred.for_each([&](const DeferredTriangle& e) {
-            if (mesh.triangle(e.t).load_generation() != e.generation) return;
-            if (!deferred_in.emplace(mesh::index(e.t), l).second)
-                problem(fmt::format("triangle {} is deferred twice", mesh::index(e.t)));
-        });
+        const Node& n = tree.node(l);
+        const auto list_in = [&](const DeferredList& list, const DeferredIn& in) {
+            list.for_each([&](const DeferredTriangle& e) {
+                if (mesh.triangle(e.t).load_generation() != e.generation) return;
+                if (!deferred_in.emplace(mesh::index(e.t), in).second)
+                    problem(fmt::format("triangle {} is deferred twice", mesh::index(e.t)));
+            });
+        };
+        list_in(n.state->deferred, {l, n.level, tree.square(l)});
+        for (int q = 0; q < 4; ++q)
+            list_in(n.state->deferred_in_child[q],
+                    {l, n.level + 1, tree.cell_square(n.level + 1, 2 * n.ix + (q & 1), 2 * n.iy + (q >> 1))});
     }
     mesh::for_each_triangle(mesh, [&](mesh::TriangleId id, const mesh::Triangle& t) {
         const geometry::Circle c = geometry::circumcircle(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]));
@@ -215,13 +228,14 @@ void verify_quadtree(const mesh::Mesh& mesh, Quadtree& tree, std::vector<std::st
         const auto listed = deferred_in.find(i);
         if (listed != deferred_in.end()) {
             // Deferred (Worker::flush_pending): not counted, listed in a leaf
-            // that holds it with room to spare, two or more levels above it.
-            const NodeId l = listed->second;
+            // whose square (or its child's, for a child's list) holds it
+            // with room to spare, two or more levels above it.
+            const DeferredIn& in = listed->second;
             const int k = tree.level_of(c.radius_squared);
-            if (counted || record == 0 || k < tree.node(l).level + 2 ||
-                !tree.disk_inside(tree.room(tree.square(l)), c.centre, c.radius_squared))
-                problem(fmt::format("triangle {} (level {}, tag {}) is deferred in leaf {} of level {}", i, k,
-                                    int(t.user_tag), l, int(tree.node(l).level)));
+            if (counted || record == 0 || k < in.level + 2 ||
+                !tree.disk_inside(tree.room(in.square), c.centre, c.radius_squared))
+                problem(fmt::format("triangle {} (level {}, tag {}) is deferred in leaf {} for level {}", i, k,
+                                    int(t.user_tag), in.leaf, in.level));
         } else if (!counted) {
             if (record != 0) problem(fmt::format("triangle {} is neither counted nor deferred", i));
         } else if (record == 0) {

@@ -154,33 +154,46 @@ void Worker::flush_pending() {
     pending_.clear();
 }
 
-bool Worker::may_defer(const geometry::Circle& c, int leaf_level, const Quadtree::Room& leaf_room) const {
-    // (Both asked, without a branch: most triangles pass both.)
-    return tree_.two_levels_below(c.radius_squared, leaf_level) &
-           tree_.disk_inside(leaf_room, c.centre, c.radius_squared);
+Worker::DeferralTargets Worker::deferral_targets(NodeId leaf) const {
+    // (The squares as Quadtree::square computes them for the nodes, bit for
+    // bit: the verifier and later splits test against those.)
+    const Node& n = tree_.node(leaf);
+    DeferralTargets t;
+    t.level = n.level;
+    t.room = tree_.room(tree_.cell_square(n.level, n.ix, n.iy));
+    for (int q = 0; q < 4; ++q)
+        t.child_rooms[q] = tree_.room(tree_.cell_square(n.level + 1, 2 * n.ix + (q & 1), 2 * n.iy + (q >> 1)));
+    const Square last = tree_.cell_square(n.level + 1, 2 * n.ix + 1, 2 * n.iy + 1);
+    t.middle = {last.x0, last.y0};
+    return t;
 }
 
-void Worker::count_or_defer(DeferredTriangle e, const geometry::Circle& c, int leaf_level,
-                            const Quadtree::Room& leaf_room, LeafState& leaf) {
-    if (may_defer(c, leaf_level, leaf_room))
-        defer(e, leaf);
-    else
-        count(e.t, c);
+DeferredList* Worker::deferral_list(const geometry::Circle& c, const DeferralTargets& at, LeafState& leaf) const {
+    // The centre picks the child; the room test alone decides (a centre
+    // rounded onto the wrong side fails it).  Both tests are asked without
+    // a branch: most triangles pass them.
+    const int q = (c.centre.x >= at.middle.x ? 1 : 0) | (c.centre.y >= at.middle.y ? 2 : 0);
+    if (tree_.two_levels_below(c.radius_squared, at.level + 1) &
+        tree_.disk_inside(at.child_rooms[q], c.centre, c.radius_squared))
+        return &leaf.deferred_in_child[q];
+    if (tree_.two_levels_below(c.radius_squared, at.level) & tree_.disk_inside(at.room, c.centre, c.radius_squared))
+        return &leaf.deferred;
+    return nullptr;
 }
 
-void Worker::defer(DeferredTriangle e, LeafState& leaf) {
-    // (Its tag is 0 already: new, or listed in the parent.)
-    leaf.deferred.push(e, deferred_blocks_);
-}
-
-// Line 13's upkeep of the deferred lists: each live triangle of the leaf's
-// list goes to the child whose square holds it, or is counted now.
+// Line 13's upkeep of the leaf's own deferred list (its lists for the
+// children became theirs unread, see split): each live triangle goes to the
+// child whose square holds it, to the list of the grandchild it fits, or is
+// counted now.
 void Worker::hand_down_deferred(NodeId leaf) {
     const Node& n = tree_.node(leaf);
-    Quadtree::Room rooms[4];
-    for (int q = 0; q < 4; ++q) rooms[q] = tree_.room(tree_.square(n.child(q)));
-    const Square last = tree_.square(n.child(3));
-    const Point middle{last.x0, last.y0};
+    DeferralTargets targets[4];
+    LeafState* states[4];
+    for (int q = 0; q < 4; ++q) {
+        targets[q] = deferral_targets(n.child(q));
+        states[q] = tree_.node(n.child(q)).state;
+    }
+    const Point middle = deferral_targets(leaf).middle;
     n.state->deferred.drain(
         [&](const DeferredTriangle& e) {
             if (!alive(e)) return;
@@ -188,7 +201,10 @@ void Worker::hand_down_deferred(NodeId leaf) {
             const geometry::Circle c =
                 geometry::circumcircle(mesh_.point(r.v[0]), mesh_.point(r.v[1]), mesh_.point(r.v[2]));
             const int q = (c.centre.x >= middle.x ? 1 : 0) | (c.centre.y >= middle.y ? 2 : 0);
-            count_or_defer(e, c, n.level + 1, rooms[q], *tree_.node(n.child(q)).state);
+            if (DeferredList* list = deferral_list(c, targets[q], *states[q]))
+                list->push(e, deferred_blocks_);
+            else
+                count(e.t, c);
         },
         [&](const DeferredTriangle& e) { prefetch(e.t); }, [&](const DeferredTriangle& e) { prefetch_corners(e); },
         deferred_blocks_);
@@ -210,16 +226,30 @@ void Worker::tagged_triangles_gone(std::span<const mesh::TaggedTriangle> gone) {
 }
 
 // A new triangle, or one a flip changed (its tag is 0: see above).
-void Worker::triangle_created(mesh::TriangleId t, const geometry::Circle& circumcircle) {
-    const mesh::Triangle& r = mesh_.triangle(t);
+void Worker::triangle_created(mesh::TriangleId t, std::uint32_t generation, const geometry::Circle& circumcircle) {
     if (current_ == no_node) {
         count(t, circumcircle);
         return;
     }
-    if (may_defer(circumcircle, current_level_, current_room_))
-        defer({t, r.generation}, *current_state_);
+    if (DeferredList* list = deferral_list(circumcircle, current_targets_, *current_state_))
+        list_soon({t, generation}, list);
     else
-        pending_.push_back({t, r.generation});
+        pending_.push_back({t, generation});
+}
+
+void Worker::list_soon(DeferredTriangle e, DeferredList* list) {
+    Recent& oldest = recent_[recent_next_];
+    if (oldest.list != nullptr && alive(oldest.e)) oldest.list->push(oldest.e, deferred_blocks_);
+    oldest = {e, list};
+    recent_next_ = (recent_next_ + 1) & (recent_capacity - 1);
+}
+
+void Worker::flush_recent() {
+    for (Recent& r : recent_) {
+        if (r.list != nullptr && alive(r.e)) r.list->push(r.e, deferred_blocks_);
+        r.list = nullptr;
+    }
+    recent_next_ = 0;
 }
 
 // ---- routing ---------------------------------------------------------------------
@@ -294,6 +324,9 @@ void Worker::split(NodeId leaf) {
         n.state = new_leaf_state(c);
         n.owner.store(tag_, std::memory_order_relaxed);
     }
+    // The leaf's lists for its children become theirs, unread.
+    LeafState& parent = *tree_.node(leaf).state;
+    for (int q = 0; q < 4; ++q) tree_.node(tree_.node(leaf).child(q)).state->deferred.take(parent.deferred_in_child[q]);
     hand_down_deferred(leaf);
     // The poor triangles go to the child their `where` names, one σ level
     // down (the side halves; σ is clamped at both ends, see leaf.hpp) with
@@ -342,8 +375,7 @@ bool Worker::should_split(const Node& n, LeafState& state) {
 bool Worker::run(NodeId leaf, std::int32_t tag) {
     const auto t0 = Clock::now();
     current_ = leaf;
-    current_room_ = tree_.room(tree_.square(leaf));
-    current_level_ = tree_.node(leaf).level;
+    current_targets_ = deferral_targets(leaf);
     current_state_ = tree_.node(leaf).state;
     tag_ = tag;
     Node& n = tree_.node(leaf);
@@ -365,6 +397,7 @@ bool Worker::run(NodeId leaf, std::int32_t tag) {
         }
     }
     flush_pending();
+    flush_recent();
     const auto t1 = Clock::now();
     times.refining += std::chrono::duration<double>(t1 - t0).count();
 

@@ -24,18 +24,12 @@
 
 namespace gpdr::parallel {
 
-// A leaf's refinement work: the paper's PoorTriangles_i(Leaf) and the queue
-// of subsegments to split, with the leaf's square for the ownership hook.
-//
 // Ownership: a point belongs to the leaf whose half-open square holds it;
 // the leaves on the root's border also own everything beyond it (as
 // Quadtree::leaf_at finds them), so that every point has exactly one owner
 // (a Steiner point outside the domain, never inserted, is still taken by
 // some leaf, which splits the hull subsegment in its way).
-struct OwnedBox {
-    double x_lo, y_lo, x_hi, y_hi;
-    bool contains(const Point& p) const { return p.x >= x_lo && p.x < x_hi && p.y >= y_lo && p.y < y_hi; }
-};
+using refine::OwnedBox;
 OwnedBox owned_box(const Quadtree& tree, NodeId leaf);
 
 // Work for a leaf outside the routing worker's zone, sent to the master.
@@ -75,10 +69,9 @@ struct MasterInfo {
 // worker that splits its parent.
 struct LeafState {
     LeafState(const Square& square, const OwnedBox& b) : work(square.side), box(b) {
-        work.set_owner(&owns, this);
+        work.set_owned_box(b);
         work.set_corner({square.x0, square.y0});
     }
-    static bool owns(const void* self, const Point& p) { return static_cast<const LeafState*>(self)->box.contains(p); }
 
     refine::Leaf work;
     OwnedBox box;
@@ -92,6 +85,12 @@ struct LeafState {
     // when a split hands the list down, and in a leaf that never splits
     // they are never read at all (Worker::flush_pending).
     DeferredList deferred;
+    // The same for triangles small enough, and far enough inside child q's
+    // square, to be deferred in that child once the leaf splits: the split
+    // gives the child this list as its own, unread.  (Most triangles a leaf
+    // makes are several levels below it; on the graded pipe 95% of the
+    // live ones a split read went on to a child's list.)
+    DeferredList deferred_in_child[4];
 };
 
 // How a triangle is counted, kept in its mesh::Triangle::user_tag: 0 not
@@ -123,7 +122,7 @@ public:
     bool run(NodeId leaf, std::int32_t tag);
 
     void tagged_triangles_gone(std::span<const mesh::TaggedTriangle> gone) override;
-    void triangle_created(mesh::TriangleId t, const geometry::Circle& circumcircle) override;
+    void triangle_created(mesh::TriangleId t, std::uint32_t generation, const geometry::Circle& circumcircle) override;
 
     LeafState* new_leaf_state(NodeId leaf);
 
@@ -156,27 +155,54 @@ private:
     // finest triangles), and their cells' counts matter only once the leaf
     // has split down to one level above them.  So a triangle two or more
     // levels below the leaf being refined, inside its square, is not
-    // counted but listed in the leaf (LeafState::deferred) as it is made;
-    // a split hands the list down to the children, dropping the entries of
-    // triangles that died and counting the triangles that are now only one
-    // level below them (or that straddle two children).  Nothing looks at
-    // an entry before that: a listed triangle that dies costs its 8 bytes
-    // until its leaf splits, or until refinement ends if it never does (at
-    // most 8 bytes per triangle ever made; 50 MB more peak on the pipe),
-    // and most of the final mesh is never counted at all.  (On the pipe the
-    // hand-downs read 22 million entries, half of them dead.  Holding new
-    // triangles in the pending list until the run ended, to list only the
-    // survivors, and sweeping dead entries out of growing lists read 39 and
-    // 31 million more.)
-    // Invariant: a live triangle is counted, pending, or listed in the one
-    // leaf whose square holds it with room to spare (Quadtree::disk_inside)
-    // at least two levels above it.
+    // counted but listed in the leaf as it is made: in the list for the
+    // child whose square holds it when it is also two levels below that
+    // child (LeafState::deferred_in_child; most are), else in the leaf's
+    // own (LeafState::deferred).  A split gives each child its list unread,
+    // and hands the own list down: entries of triangles that died are
+    // dropped, the triangles now only one level below a child (or that
+    // straddle two children) are counted, the others listed in a child.
+    // Nothing looks at an entry before that: a listed triangle that dies
+    // costs its 8 bytes until a split reads it, or until refinement ends (at
+    // most 8 bytes per triangle ever made; the lists for the children keep
+    // dead entries longer, and the ring below keeps most out: the pipe's
+    // peak is 911 MiB, 893 with one list per leaf), and most of the final
+    // mesh is never counted.
+    // (On the pipe the hand-downs read 3.8 million entries and pass 11.7
+    // million on unread.  One list per leaf, all of it read at a split,
+    // read 22 million, and 95% of its live entries went on to a child's
+    // list; holding new triangles in the pending list until the run ended,
+    // to list only the survivors, and sweeping dead entries out of growing
+    // lists read 39 and 31 million more.)
+    // Invariant: a live triangle is counted, pending (or in the ring of
+    // recent ones, below; both are emptied when a run ends), or listed in
+    // one leaf L: in L's own list when L's square holds it with room to
+    // spare (Quadtree::disk_inside) and it is at least two levels below L,
+    // or in L's list for child q when the square of L's child q does and
+    // it is at least two levels below that child.
     void flush_pending();
-    // Counts the live triangle e, or lists it in `leaf` (of this level and
-    // square) when it may be deferred there.
-    void count_or_defer(DeferredTriangle e, const geometry::Circle& circumcircle, int leaf_level,
-                        const Quadtree::Room& leaf_room, LeafState& leaf);
-    void defer(DeferredTriangle e, LeafState& leaf);
+    // A new triangle that may be deferred waits in a ring of the last
+    // recent_capacity such triangles before it is listed, and is listed
+    // only if it is still alive when it leaves the ring (or when the run
+    // ends): each insertion kills about four triangles, mostly ones made
+    // a few insertions before, and a listed dead triangle holds its 8 bytes
+    // until a split reads it.  (On the pipe a ring of 256 keeps 12.5 of
+    // 35 million out of the lists: 80 MB less peak, for a check of a slot
+    // still in the cache.)
+    void list_soon(DeferredTriangle e, DeferredList* list);
+    void flush_recent();
+    // Where a triangle with this circumcircle may be deferred in leaf
+    // `leaf` (whose geometry `at` describes): the list for the child its
+    // centre lies in, the leaf's own, or none (it must be counted).
+    struct DeferralTargets {
+        int level;
+        Quadtree::Room room;
+        Quadtree::Room child_rooms[4];
+        Point middle;  // where the children's squares meet
+    };
+    DeferralTargets deferral_targets(NodeId leaf) const;
+    DeferredList* deferral_list(const geometry::Circle& circumcircle, const DeferralTargets& at,
+                                LeafState& leaf) const;
     // Whether e's triangle is the one listed (its slot's generation has not moved on).
     bool alive(DeferredTriangle e) const { return mesh_.triangle(e.t).load_generation() == e.generation; }
     // Asks for triangle t's slot ahead of reading it (deferred_list.hpp: look_ahead).
@@ -187,7 +213,6 @@ private:
         if (!alive(e)) return;
         for (const mesh::VertexId v : mesh_.triangle(e.t).v) __builtin_prefetch(&mesh_.point(v));
     }
-    bool may_defer(const geometry::Circle& circumcircle, int leaf_level, const Quadtree::Room& leaf_room) const;
     void hand_down_deferred(NodeId leaf);
     void apply(CellRecord record, int delta, bool check_zone);
     // Where the work item should go: a leaf of this worker's zone (pushed
@@ -213,11 +238,17 @@ private:
         std::uint32_t generation;  // stale once the triangle died or changed
     };
     std::vector<Pending> pending_;
+    static constexpr std::uint32_t recent_capacity = 256;  // a power of two
+    struct Recent {
+        DeferredTriangle e;
+        DeferredList* list = nullptr;  // where it goes; nullptr: a free place
+    };
+    Recent recent_[recent_capacity];
+    std::uint32_t recent_next_ = 0;  // the oldest place
     std::vector<refine::QueuedTriangle> routing_triangles_;
     std::vector<refine::QueuedSubsegment> routing_subsegments_;
     NodeId current_ = no_node;
-    Quadtree::Room current_room_{};  // of current_, and its level and state:
-    int current_level_ = 0;
+    DeferralTargets current_targets_{};  // of current_, and its state
     LeafState* current_state_ = nullptr;
     std::int32_t tag_ = 0;  // the zone's Node::owner while a run goes on
     // Cells found lately: consecutive triangles mostly share cells, and a

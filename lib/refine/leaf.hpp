@@ -12,10 +12,10 @@
 //
 // The sequential refiner is one leaf that never splits (refine.hpp).  The
 // parallel layer owns many leaves and runs refine_leaf on them from worker
-// threads; a leaf is touched by one thread at a time.  Its `owns` hook says
+// threads; a leaf is touched by one thread at a time.  Its owned box says
 // whether a Steiner point or split point belongs to this leaf; what does
 // not is handed off (handed_off_*) for the scheduler to route.  With no
-// hook, everything belongs to the leaf.
+// box, everything belongs to the leaf.
 //
 // Bucket σ is clamped to [0, bucket_count - 1]: σ < 0 (r > ℓ) never happens
 // under the paper's relation (9) and σ > 127 means r < ℓ 2^-127; clamping
@@ -54,6 +54,16 @@ struct QueuedTriangle {
     std::uint32_t where = 0;
 };
 
+// The points a leaf owns (parallel layer): the half-open box
+// [x_lo, x_hi) x [y_lo, y_hi), whose sides may be infinite.  (A plain box,
+// not a callback: the test is made for every poor triangle a worker finds.)
+struct OwnedBox {
+    double x_lo, y_lo, x_hi, y_hi;
+    bool contains(const geometry::Point& p) const {
+        return p.x >= x_lo && p.x < x_hi && p.y >= y_lo && p.y < y_hi;
+    }
+};
+
 struct QueuedSubsegment {
     mesh::EdgeRef edge;        // an edge of a live triangle when queued
     std::uint32_t generation;  // of edge.triangle() when queued
@@ -64,7 +74,6 @@ class Leaf {
 public:
     static constexpr int bucket_count = 128;
     static constexpr int rank_count = 64;
-    using OwnsPoint = bool (*)(const void* context, const geometry::Point& p);
 
     explicit Leaf(double side = 1.0) : side_squared_(side * side), side_(side) {}
 
@@ -116,11 +125,11 @@ public:
     // Whether no level is left in `where` (or it was never known).
     static bool path_used_up(std::uint32_t where) { return (where & 15u) == 0; }
 
-    void set_owner(OwnsPoint owns, const void* context) {
-        owns_ = owns;
-        owns_context_ = context;
+    void set_owned_box(const OwnedBox& box) {
+        box_ = box;
+        has_box_ = true;
     }
-    bool owns(const geometry::Point& p) const { return owns_ == nullptr || owns_(owns_context_, p); }
+    bool owns(const geometry::Point& p) const { return !has_box_ || box_.contains(p); }
 
     // ---- poor triangles ------------------------------------------------------
     // Queues q at σ level `level` with shape rank `rank` (0 = worst shape).
@@ -204,8 +213,8 @@ private:
     int lowest_ = bucket_count;
     std::size_t poor_entries_ = 0;
     std::vector<QueuedSubsegment> subsegments_;
-    OwnsPoint owns_ = nullptr;
-    const void* owns_context_ = nullptr;
+    OwnedBox box_{};
+    bool has_box_ = false;
 };
 
 }  // namespace gpdr::refine

@@ -192,7 +192,7 @@ void LeafRefiner::classify_created(Leaf& leaf) {
     for (TriangleId id : buffer_.created) {
         const mesh::Triangle& r = mesh_.triangle(id);
         const TriangleMeasures m = QualityTest::measure(mesh_.point(r.v[0]), mesh_.point(r.v[1]), mesh_.point(r.v[2]));
-        if (observer_ != nullptr) observer_->triangle_created(id, m.circle);
+        if (observer_ != nullptr) observer_->triangle_created(id, r.generation, m.circle);
         classify(leaf, id, m);
     }
 }

@@ -157,12 +157,14 @@ private:
 // first the tagged triangles that died or that a flip changed, as they were
 // (mesh::InsertBuffer::tagged_gone; their slots may already be reused by the
 // triangles that follow), then each new triangle, or one a flip changed in
-// place, with the circumcircle classification computes for it anyway.
+// place, with its slot's generation and the circumcircle classification
+// computes for it anyway.
 class MeshObserver {
 public:
     virtual ~MeshObserver() = default;
     virtual void tagged_triangles_gone(std::span<const mesh::TaggedTriangle> gone) = 0;
-    virtual void triangle_created(mesh::TriangleId t, const geometry::Circle& circumcircle) = 0;
+    virtual void triangle_created(mesh::TriangleId t, std::uint32_t generation,
+                                  const geometry::Circle& circumcircle) = 0;
 };
 
 // One thread's refiner: owns the pool, insertion buffer and scratch.

@@ -1,5 +1,5 @@
 // The pieces the deferred counting rests on: the block lists of deferred
-// triangles (push and drain against a plain vector), the quadrant path a
+// triangles (push, drain and take against a plain vector), the quadrant path a
 // queue entry carries through splits (Leaf::where against the quadtree's own
 // child squares), the level a triangle is counted at (Quadtree::level_of
 // against long double arithmetic), the quadtree's division-free level test
@@ -102,6 +102,41 @@ TEST_CASE("deferred lists keep and drain what a vector would", "[parallel][defer
     CHECK(contents(list) == std::vector<std::uint32_t>{5});
 }
 
+// take() moves every entry without reading it, into an empty list (a new
+// leaf's) or one that has entries already, and leaves the source empty and
+// usable.
+TEST_CASE("a deferred list takes over another's entries", "[parallel][deferred]") {
+    BlockPool pool;
+    DeferredList from, into;
+    std::vector<std::uint32_t> expected;
+    const std::uint32_t n = 2 * DeferredBlock::capacity + 5;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        from.push({mesh::TriangleId{i}, 0}, pool);
+        expected.push_back(i);
+    }
+    into.take(from);  // into an empty list
+    CHECK(into.size() == n);
+    CHECK(contents(into) == expected);
+    CHECK(from.size() == 0);
+    CHECK(contents(from).empty());
+
+    for (std::uint32_t i = n; i < n + 7; ++i) {  // a partial block
+        from.push({mesh::TriangleId{i}, 0}, pool);
+        expected.push_back(i);
+    }
+    into.take(from);  // onto a list with entries
+    into.push({mesh::TriangleId{n + 7}, 0}, pool);
+    expected.push_back(n + 7);
+    CHECK(into.size() == expected.size());
+    CHECK(contents(into) == expected);
+    CHECK(contents(from).empty());
+    DeferredList empty;
+    into.take(empty);  // nothing to take
+    CHECK(contents(into) == expected);
+    from.push({mesh::TriangleId{1}, 0}, pool);
+    CHECK(contents(from) == std::vector<std::uint32_t>{1});
+}
+
 // The child a split picks from an entry's quadrant path is the child whose
 // square holds the point, level after level, as long as the path lasts.
 TEST_CASE("a queue entry's quadrant path follows the quadtree's child squares", "[parallel][deferred]") {
@@ -178,7 +213,8 @@ TEST_CASE("the division-free two-levels-below test agrees with level_of", "[para
         const double r = std::exp2(exponent(random));
         const double rr = r * r;
         const int k = tree.level_of(rr);
-        for (int m = 0; m <= max_level; ++m) {
+        // (m = max_level + 1: a child of the deepest leaves; nothing qualifies.)
+        for (int m = 0; m <= max_level + 1; ++m) {
             const bool below = tree.two_levels_below(rr, m);
             // Conservative: never claims a triangle that is not two levels
             // below and countable ...

@@ -3,7 +3,8 @@
 // explains why), kept in blocks of a kilobyte that a worker recycles.
 //
 // The lists of all leaves together hold about one entry per triangle of the
-// mesh, and a split empties a list into its children's.  Growing vectors
+// mesh, and a split empties a list into its children's or passes it to one
+// of them whole (take).  Growing vectors
 // would copy every entry at each doubling and hand large buffers back to the
 // system only to fault fresh zeroed pages in for the next; fixed blocks
 // taken from, and given back to, the worker's own BlockPool are never copied

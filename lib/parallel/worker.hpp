@@ -80,10 +80,9 @@ struct LeafState {
     // inside the leaf's square and is at least two levels below it, so no
     // count that anyone reads before the leaf splits includes it.  The list
     // is read only by the worker refining the leaf.  It also holds the
-    // entries of triangles that died since they were listed (most of them,
-    // listed when made and killed later in the same run): they are dropped
-    // when a split hands the list down, and in a leaf that never splits
-    // they are never read at all (Worker::flush_pending).
+    // entries of triangles that died since they were listed: they are
+    // dropped when a split hands the list down, and in a leaf that never
+    // splits they are never read at all (Worker::flush_pending).
     DeferredList deferred;
     // The same for triangles small enough, and far enough inside child q's
     // square, to be deferred in that child once the leaf splits: the split
@@ -184,7 +183,7 @@ private:
     // A new triangle that may be deferred waits in a ring of the last
     // recent_capacity such triangles before it is listed, and is listed
     // only if it is still alive when it leaves the ring (or when the run
-    // ends): each insertion kills about four triangles, mostly ones made
+    // ends): each insertion kills about four triangles, many of them made
     // a few insertions before, and a listed dead triangle holds its 8 bytes
     // until a split reads it.  (On the pipe a ring of 256 keeps 12.5 of
     // 35 million out of the lists: 80 MB less peak, for a check of a slot

@@ -4,11 +4,10 @@
 //
 // The lists of all leaves together hold about one entry per triangle of the
 // mesh, and a split empties a list into its children's or passes it to one
-// of them whole (take).  Growing vectors
-// would copy every entry at each doubling and hand large buffers back to the
-// system only to fault fresh zeroed pages in for the next; fixed blocks
-// taken from, and given back to, the worker's own BlockPool are never copied
-// and mostly come back warm.
+// of them whole (take).  Growing vectors would copy every entry at each
+// doubling and hand large buffers back to the system only to fault fresh
+// zeroed pages in for the next; fixed blocks taken from, and given back to,
+// the worker's own BlockPool are never copied and mostly come back warm.
 
 #include <cstdint>
 #include <memory>

@@ -144,8 +144,8 @@ void Worker::flush_pending() {
     for (std::size_t i = 0; i < n && i < look_ahead; ++i) prefetch(pending_[i].t);
     for (std::size_t i = 0; i < n; ++i) {
         if (i + look_ahead < n) prefetch(pending_[i + look_ahead].t);
-        if (i + look_near < n) prefetch_corners({pending_[i + look_near].t, pending_[i + look_near].generation});
-        const Pending& p = pending_[i];
+        if (i + look_near < n) prefetch_corners(pending_[i + look_near]);
+        const DeferredTriangle& p = pending_[i];
         const mesh::Triangle& r = mesh_.triangle(p.t);
         // Created and killed (or changed by a flip) in this run: never counted.
         if (r.load_generation() != p.generation) continue;
@@ -231,10 +231,11 @@ void Worker::triangle_created(mesh::TriangleId t, std::uint32_t generation, cons
         count(t, circumcircle);
         return;
     }
+    const DeferredTriangle e{t, generation};
     if (DeferredList* list = deferral_list(circumcircle, current_targets_, *current_state_))
-        list_soon({t, generation}, list);
+        list_soon(e, list);
     else
-        pending_.push_back({t, generation});
+        pending_.push_back(e);
 }
 
 void Worker::list_soon(DeferredTriangle e, DeferredList* list) {

@@ -165,8 +165,8 @@ private:
     // costs its 8 bytes until a split reads it, or until refinement ends (at
     // most 8 bytes per triangle ever made; the lists for the children keep
     // dead entries longer, and the ring below keeps most out: the pipe's
-    // peak is 911 MiB, 893 with one list per leaf), and most of the final
-    // mesh is never counted.
+    // peak at -g4 is 864-868 MiB, 887-892 with one list per leaf), and most
+    // of the final mesh is never counted.
     // (On the pipe the hand-downs read 3.8 million entries and pass 11.7
     // million on unread.  One list per leaf, all of it read at a split,
     // read 22 million, and 95% of its live entries went on to a child's
@@ -232,11 +232,7 @@ private:
     NodeAllocator nodes_;
     std::deque<LeafState> leaf_states_;
     BlockPool deferred_blocks_;
-    struct Pending {
-        mesh::TriangleId t;
-        std::uint32_t generation;  // stale once the triangle died or changed
-    };
-    std::vector<Pending> pending_;
+    std::vector<DeferredTriangle> pending_;  // (stale once the triangle died or changed)
     static constexpr std::uint32_t recent_capacity = 256;  // a power of two
     struct Recent {
         DeferredTriangle e;

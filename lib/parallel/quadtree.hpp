@@ -158,8 +158,15 @@ public:
     // asked of every triangle a worker creates.  (leaf_level may be
     // max_level + 1, a child of the deepest leaves: nothing qualifies.)
     bool two_levels_below(double radius_squared, int leaf_level) const {
-        return radius_squared <= deferrable_below_[leaf_level] && radius_squared >= smallest_counted_;
+        return two_levels_below(leaf_level).holds(radius_squared);
     }
+    // The same test with its two limits taken out, for a caller that asks
+    // it of many triangles and one leaf level.
+    struct RadiusBand {
+        double most, least;  // of the circumradius²
+        bool holds(double radius_squared) const { return radius_squared <= most && radius_squared >= least; }
+    };
+    RadiusBand two_levels_below(int leaf_level) const { return {deferrable_below_[leaf_level], smallest_counted_}; }
 
     // A square as disk_inside reads it: its centre, and how far from the
     // centre a disk may reach in x and in y, less twice the rounding margin.

@@ -130,6 +130,8 @@ void Worker::count(mesh::TriangleId t, const geometry::Circle& c) {
     apply(record, +1, current_ != no_node);
 }
 
+void Worker::count_now(mesh::TriangleId t, const geometry::Circle& c) { count(t, c); }
+
 void Worker::uncount(const mesh::TaggedTriangle& was) {
     const geometry::Circle c =
         geometry::circumcircle(mesh_.point(was.v[0]), mesh_.point(was.v[1]), mesh_.point(was.v[2]));
@@ -138,18 +140,17 @@ void Worker::uncount(const mesh::TaggedTriangle& was) {
 
 void Worker::flush_pending() {
     if (pending_.empty()) return;
-    // Prefetching as DeferredList::drain does for hand_down_deferred: each
-    // triangle look_ahead entries early, its corners look_near entries early.
+    // Prefetching as DeferredList::drain does for hand_down_deferred, each
+    // triangle look_ahead entries early (its corners are not read: the
+    // entry keeps the circle the triangle was made with).
     const std::size_t n = pending_.size();
-    for (std::size_t i = 0; i < n && i < look_ahead; ++i) prefetch(pending_[i].t);
+    for (std::size_t i = 0; i < n && i < look_ahead; ++i) prefetch(pending_[i].e.t);
     for (std::size_t i = 0; i < n; ++i) {
-        if (i + look_ahead < n) prefetch(pending_[i + look_ahead].t);
-        if (i + look_near < n) prefetch_corners(pending_[i + look_near]);
-        const DeferredTriangle& p = pending_[i];
-        const mesh::Triangle& r = mesh_.triangle(p.t);
+        if (i + look_ahead < n) prefetch(pending_[i + look_ahead].e.t);
+        const Created& p = pending_[i];
         // Created and killed (or changed by a flip) in this run: never counted.
-        if (r.load_generation() != p.generation) continue;
-        count(p.t, geometry::circumcircle(mesh_.point(r.v[0]), mesh_.point(r.v[1]), mesh_.point(r.v[2])));
+        if (!alive(p.e)) continue;
+        count(p.e.t, p.circle);
     }
     pending_.clear();
 }
@@ -160,6 +161,8 @@ Worker::DeferralTargets Worker::deferral_targets(NodeId leaf) const {
     const Node& n = tree_.node(leaf);
     DeferralTargets t;
     t.level = n.level;
+    t.band = tree_.two_levels_below(n.level);
+    t.child_band = tree_.two_levels_below(n.level + 1);
     t.room = tree_.room(tree_.cell_square(n.level, n.ix, n.iy));
     for (int q = 0; q < 4; ++q)
         t.child_rooms[q] = tree_.room(tree_.cell_square(n.level + 1, 2 * n.ix + (q & 1), 2 * n.iy + (q >> 1)));
@@ -173,10 +176,9 @@ DeferredList* Worker::deferral_list(const geometry::Circle& c, const DeferralTar
     // rounded onto the wrong side fails it).  Both tests are asked without
     // a branch: most triangles pass them.
     const int q = (c.centre.x >= at.middle.x ? 1 : 0) | (c.centre.y >= at.middle.y ? 2 : 0);
-    if (tree_.two_levels_below(c.radius_squared, at.level + 1) &
-        tree_.disk_inside(at.child_rooms[q], c.centre, c.radius_squared))
+    if (at.child_band.holds(c.radius_squared) & tree_.disk_inside(at.child_rooms[q], c.centre, c.radius_squared))
         return &leaf.deferred_in_child[q];
-    if (tree_.two_levels_below(c.radius_squared, at.level) & tree_.disk_inside(at.room, c.centre, c.radius_squared))
+    if (at.band.holds(c.radius_squared) & tree_.disk_inside(at.room, c.centre, c.radius_squared))
         return &leaf.deferred;
     return nullptr;
 }
@@ -227,30 +229,28 @@ void Worker::tagged_triangles_gone(std::span<const mesh::TaggedTriangle> gone) {
 
 // A new triangle, or one a flip changed (its tag is 0: see above).
 void Worker::triangle_created(mesh::TriangleId t, std::uint32_t generation, const geometry::Circle& circumcircle) {
-    if (current_ == no_node) {
-        count(t, circumcircle);
+    if (current_ == no_node) [[unlikely]] {
+        count_now(t, circumcircle);
         return;
     }
-    const DeferredTriangle e{t, generation};
-    if (DeferredList* list = deferral_list(circumcircle, current_targets_, *current_state_))
-        list_soon(e, list);
-    else
-        pending_.push_back(e);
+    created_[created_size_++] = {{t, generation}, circumcircle};
+    if (created_size_ == created_batch) [[unlikely]]
+        sort_created();
 }
 
-void Worker::list_soon(DeferredTriangle e, DeferredList* list) {
-    Recent& oldest = recent_[recent_next_];
-    if (oldest.list != nullptr && alive(oldest.e)) oldest.list->push(oldest.e, deferred_blocks_);
-    oldest = {e, list};
-    recent_next_ = (recent_next_ + 1) & (recent_capacity - 1);
-}
-
-void Worker::flush_recent() {
-    for (Recent& r : recent_) {
-        if (r.list != nullptr && alive(r.e)) r.list->push(r.e, deferred_blocks_);
-        r.list = nullptr;
+void Worker::sort_created() {
+    // (A copy: the pushes below cannot change it, so the compiler keeps it
+    // in registers.)
+    const DeferralTargets at = current_targets_;
+    for (std::uint32_t i = 0; i < created_size_; ++i) {
+        const Created& c = created_[i];
+        if (!alive(c.e)) continue;
+        if (DeferredList* list = deferral_list(c.circle, at, *current_state_))
+            list->push(c.e, deferred_blocks_);
+        else
+            pending_.push_back(c);
     }
-    recent_next_ = 0;
+    created_size_ = 0;
 }
 
 // ---- routing ---------------------------------------------------------------------
@@ -369,6 +369,7 @@ bool Worker::should_split(const Node& n, LeafState& state) {
     const bool work_is_childrens = lowest >= 2 + static_cast<int>(run_.settings().granularity) ||
                                    (lowest < 0 && state.work.subsegment_entries() != 0);
     if (!work_is_childrens) return false;
+    sort_created();
     flush_pending();  // (the count must be exact now)
     return n.count.load(std::memory_order_relaxed) == 0;
 }
@@ -397,8 +398,8 @@ bool Worker::run(NodeId leaf, std::int32_t tag) {
             break;
         }
     }
+    sort_created();
     flush_pending();
-    flush_recent();
     const auto t1 = Clock::now();
     times.refining += std::chrono::duration<double>(t1 - t0).count();
 

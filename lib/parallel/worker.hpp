@@ -138,6 +138,8 @@ public:
 
 private:
     void count(mesh::TriangleId t, const geometry::Circle& circumcircle);
+    // (Out of line: triangle_created's fast path stays free of it.)
+    [[gnu::noinline]] void count_now(mesh::TriangleId t, const geometry::Circle& circumcircle);
     void uncount(const mesh::TaggedTriangle& was);
     // Counts the triangles created since the last call that are still
     // alive and were not listed as deferred (below).  Most triangles a run
@@ -164,7 +166,7 @@ private:
     // Nothing looks at an entry before that: a listed triangle that dies
     // costs its 8 bytes until a split reads it, or until refinement ends (at
     // most 8 bytes per triangle ever made; the lists for the children keep
-    // dead entries longer, and the ring below keeps most out: the pipe's
+    // dead entries longer, and the batch below keeps many out: the pipe's
     // peak at -g4 is 864-868 MiB, 887-892 with one list per leaf), and most
     // of the final mesh is never counted.
     // (On the pipe the hand-downs read 3.8 million entries and pass 11.7
@@ -173,28 +175,31 @@ private:
     // list; holding new triangles in the pending list until the run ended,
     // to list only the survivors, and sweeping dead entries out of growing
     // lists read 39 and 31 million more.)
-    // Invariant: a live triangle is counted, pending (or in the ring of
-    // recent ones, below; both are emptied when a run ends), or listed in
+    // Invariant: a live triangle is counted, pending (or in the batch of
+    // new ones, below; both are emptied when a run ends), or listed in
     // one leaf L: in L's own list when L's square holds it with room to
     // spare (Quadtree::disk_inside) and it is at least two levels below L,
     // or in L's list for child q when the square of L's child q does and
     // it is at least two levels below that child.
     void flush_pending();
-    // A new triangle that may be deferred waits in a ring of the last
-    // recent_capacity such triangles before it is listed, and is listed
-    // only if it is still alive when it leaves the ring (or when the run
-    // ends): each insertion kills about four triangles, many of them made
-    // a few insertions before, and a listed dead triangle holds its 8 bytes
-    // until a split reads it.  (On the pipe a ring of 256 keeps 12.5 of
-    // 35 million out of the lists: 80 MB less peak, for a check of a slot
-    // still in the cache.)
-    void list_soon(DeferredTriangle e, DeferredList* list);
-    void flush_recent();
+    // A new triangle waits, with its circumcircle, in a batch of the last
+    // created_batch ones the run made.  When the batch is full, and before
+    // the leaf's count is read or the run ends, the ones still alive are
+    // sorted: listed (deferral_list) or left pending.  Each insertion kills
+    // about four triangles, many of them made a few insertions before, and
+    // a listed dead triangle holds its 8 bytes until a split reads it; the
+    // dead ones in the batch cost a generation check, no test.  (Sorting
+    // at creation, through a ring of 256 deferrable triangles that listed
+    // only those alive when they left it, executed 121 instructions per
+    // triangle against 18 + 60 now; the batch is 8 KiB, which stays in the
+    // first-level cache, where 1024 missed it a third more often.)
+    void sort_created();
     // Where a triangle with this circumcircle may be deferred in leaf
     // `leaf` (whose geometry `at` describes): the list for the child its
     // centre lies in, the leaf's own, or none (it must be counted).
     struct DeferralTargets {
         int level;
+        Quadtree::RadiusBand band, child_band;  // two levels below the leaf, below a child
         Quadtree::Room room;
         Quadtree::Room child_rooms[4];
         Point middle;  // where the children's squares meet
@@ -232,14 +237,16 @@ private:
     NodeAllocator nodes_;
     std::deque<LeafState> leaf_states_;
     BlockPool deferred_blocks_;
-    std::vector<DeferredTriangle> pending_;  // (stale once the triangle died or changed)
-    static constexpr std::uint32_t recent_capacity = 256;  // a power of two
-    struct Recent {
+    // A new triangle and the circumcircle it was made with (stale once the
+    // triangle died or changed).
+    struct Created {
         DeferredTriangle e;
-        DeferredList* list = nullptr;  // where it goes; nullptr: a free place
+        geometry::Circle circle;
     };
-    Recent recent_[recent_capacity];
-    std::uint32_t recent_next_ = 0;  // the oldest place
+    std::vector<Created> pending_;
+    static constexpr std::uint32_t created_batch = 256;
+    Created created_[created_batch];
+    std::uint32_t created_size_ = 0;
     std::vector<refine::QueuedTriangle> routing_triangles_;
     std::vector<refine::QueuedSubsegment> routing_subsegments_;
     NodeId current_ = no_node;

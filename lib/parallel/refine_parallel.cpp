@@ -91,13 +91,27 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
             Worker& worker = *workers[w];
             Slot& slot = slots[w];
             std::unique_lock lock(mutex);
+            bool tell_master = false;  // of results left in slot.finished
             for (;;) {
                 const auto t0 = Clock::now();
+                if (tell_master && slot.current.leaf == no_node) {
+                    // (Told with the mutex free, as below.)
+                    lock.unlock();
+                    master_cv.notify_one();
+                    tell_master = false;
+                    lock.lock();
+                }
                 slot.cv.wait(lock, [&] { return quit || slot.current.leaf != no_node; });
                 worker.times.waiting += seconds(t0, Clock::now());
                 if (quit) return;
                 const Task task = slot.current;
                 lock.unlock();
+                // The master is woken only now that the mutex is free: woken
+                // while the worker held it, it would find it taken and sleep
+                // again at once (two more context switches on a machine whose
+                // cores the workers keep busy).
+                if (tell_master) master_cv.notify_one();
+                tell_master = false;
                 bool split = false;
                 try {
                     split = worker.run(task.leaf, task.entry + 1);
@@ -112,7 +126,7 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
                 worker.outbox.clear();
                 slot.current = slot.next;
                 slot.next = {};
-                master_cv.notify_one();
+                tell_master = true;
             }
         });
     }
@@ -126,6 +140,7 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
             Task task;
         };
         std::vector<Planned> planned;
+        std::vector<Slot*> wake;  // workers given a leaf to start
         std::vector<Task> current(threads);
         std::vector<char> has_next(threads);
         for (;;) {
@@ -183,7 +198,7 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
                 Slot& slot = slots[p.w];
                 if (slot.current.leaf == no_node) {
                     slot.current = p.task;
-                    slot.cv.notify_one();
+                    wake.push_back(&slot);
                 } else {
                     slot.next = p.task;
                 }
@@ -207,7 +222,14 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
                 scheduler.move_assignment(donor->next.entry, entry);
                 slot.current = {entry, donor->next.leaf};
                 donor->next = {};
-                slot.cv.notify_one();
+                wake.push_back(&slot);
+            }
+            if (!wake.empty()) {
+                // With the mutex free (see the workers' loop).
+                lock.unlock();
+                for (Slot* slot : wake) slot->cv.notify_one();
+                wake.clear();
+                lock.lock();
             }
             const auto t1 = Clock::now();
             report.master.managing += seconds(t0, t1);

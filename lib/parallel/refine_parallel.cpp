@@ -28,6 +28,9 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
 
+// Leaves a worker may hold at once outside checked mode (run_threads).
+constexpr unsigned queue_depth = 3;
+
 // The root square: it holds every circumdisk of the mesh (so every Steiner
 // point, and by the Bowyer-Watson containment every later circumdisk, lies
 // in it) and has side > 4 r_max, so relation (9) holds for it from the start.
@@ -58,12 +61,16 @@ void merge(refine::RefineReport& into, refine::RefineReport& from) {
     from.new_vertices = {};
 }
 
-// The master loop and the worker threads.  Each worker has two assignment
-// entries (Scheduler): the leaf it refines and, outside checked mode, the
-// next one, handed out while it still refines, so that it goes on at once
-// instead of waiting for the master to take its leaf back; the master
-// completes the finished leaf meanwhile.  A worker that finds nothing to do
-// takes over another's next leaf that has not started yet.
+// The master loop and the worker threads.  Each worker has a short queue of
+// assignments (Scheduler entries queue_depth w .. queue_depth w + depth - 1):
+// the leaf it refines and, outside checked mode, the next ones, handed out
+// while it still refines, so that it goes on at once instead of waiting for
+// the master to take its leaf back.  A worker wakes the master only when
+// its queue runs low (one leaf left besides the one it starts) or another
+// worker has nothing to do: on two cores each wake-up takes a core from a
+// worker, and a queue of three lets the master complete two leaves and hand
+// out two per wake-up instead of one.  A worker that finds nothing to do
+// takes over another's last leaf that has not started yet.
 void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& scheduler, const ParallelOptions& options,
                  ParallelReport& report, std::exception_ptr& failure, const std::function<void()>& check) {
     struct Task {
@@ -75,10 +82,23 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
         bool split, stopped, outgrew_root;
         std::vector<Routed> outbox;
     };
+    // Checked mode checks between leaves, with every worker idle: one leaf each.
+    const unsigned depth = options.checked ? 1 : queue_depth;
     struct Slot {
         std::condition_variable cv;
-        Task current, next;  // current: the worker's (it may be refining it)
+        // tasks[0] is the worker's (it may be refining it); the others wait.
+        Task tasks[queue_depth];
+        unsigned count = 0;
         std::vector<Finished> finished;
+        void push(Task t) { tasks[count++] = t; }
+        void pop_front() {
+            for (unsigned i = 1; i < count; ++i) tasks[i - 1] = tasks[i];
+            tasks[--count] = {};
+        }
+        bool holds(int entry) const {
+            return std::any_of(tasks, tasks + count, [&](const Task& t) { return t.entry == entry; }) ||
+                   std::any_of(finished.begin(), finished.end(), [&](const Finished& f) { return f.entry == entry; });
+        }
     };
     const auto threads = static_cast<unsigned>(workers.size());
     std::mutex mutex;
@@ -94,17 +114,17 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
             bool tell_master = false;  // of results left in slot.finished
             for (;;) {
                 const auto t0 = Clock::now();
-                if (tell_master && slot.current.leaf == no_node) {
+                if (tell_master && slot.count == 0) {
                     // (Told with the mutex free, as below.)
                     lock.unlock();
                     master_cv.notify_one();
                     tell_master = false;
                     lock.lock();
                 }
-                slot.cv.wait(lock, [&] { return quit || slot.current.leaf != no_node; });
+                slot.cv.wait(lock, [&] { return quit || slot.count != 0; });
                 worker.times.waiting += seconds(t0, Clock::now());
                 if (quit) return;
-                const Task task = slot.current;
+                const Task task = slot.tasks[0];
                 lock.unlock();
                 // The master is woken only now that the mutex is free: woken
                 // while the worker held it, it would find it taken and sleep
@@ -124,9 +144,11 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
                 lock.lock();
                 slot.finished.push_back({task.entry, split, worker.stopped, worker.outgrew_root, std::move(worker.outbox)});
                 worker.outbox.clear();
-                slot.current = slot.next;
-                slot.next = {};
-                tell_master = true;
+                slot.pop_front();
+                // Otherwise the result waits for the next wake-up (the
+                // master takes every worker's results each time).
+                tell_master = slot.count <= 1 || worker.stopped ||
+                              std::any_of(slots.begin(), slots.end(), [](const Slot& s) { return s.count == 0; });
             }
         });
     }
@@ -141,8 +163,8 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
         };
         std::vector<Planned> planned;
         std::vector<Slot*> wake;  // workers given a leaf to start
-        std::vector<Task> current(threads);
-        std::vector<char> has_next(threads);
+        // What each worker held when the results were taken (entries in use).
+        std::vector<std::vector<int>> held(threads);
         for (;;) {
             const auto t0 = Clock::now();
             // Take the results and what each worker holds, then let go of
@@ -152,8 +174,8 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
                 Slot& slot = slots[w];
                 for (Finished& f : slot.finished) done.push_back(std::move(f));
                 slot.finished.clear();
-                current[w] = slot.current;
-                has_next[w] = slot.next.leaf != no_node;
+                held[w].clear();
+                for (unsigned i = 0; i < slot.count; ++i) held[w].push_back(slot.tasks[i].entry);
             }
             const bool failed = failure != nullptr;
             lock.unlock();
@@ -169,26 +191,21 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
                 need_check = false;
             }
             planned.clear();
-            if (!stop && !failed && !need_check) {
-                // Idle workers first (both entries of an idle worker are
-                // free: its results were just completed) ...
-                for (unsigned w = 0; w < threads; ++w) {
-                    if (current[w].leaf != no_node) continue;
-                    const int entry = static_cast<int>(2 * w);
+            // Idle workers first, then one more leaf for each worker in
+            // turn, until the queues are full or no leaf can be handed out.
+            bool none_left = stop || failed || need_check;
+            for (unsigned round = 0; round < depth && !none_left; ++round) {
+                for (unsigned w = 0; w < threads && !none_left; ++w) {
+                    if (held[w].size() != round) continue;
+                    int entry = static_cast<int>(queue_depth * w);
+                    while (std::find(held[w].begin(), held[w].end(), entry) != held[w].end()) ++entry;
                     const NodeId leaf = scheduler.assign(entry, busy);
-                    if (leaf == no_node) break;
+                    if (leaf == no_node) {
+                        none_left = true;
+                        break;
+                    }
                     ++busy;
-                    planned.push_back({w, {entry, leaf}});
-                }
-                // ... then the next leaf of each busy worker (its other
-                // entry), not in checked mode, whose checks need every
-                // worker idle now and then.
-                for (unsigned w = 0; w < threads && !options.checked; ++w) {
-                    if (current[w].leaf == no_node || has_next[w]) continue;
-                    const int entry = current[w].entry ^ 1;
-                    const NodeId leaf = scheduler.assign(entry, busy);
-                    if (leaf == no_node) break;
-                    ++busy;
+                    held[w].push_back(entry);
                     planned.push_back({w, {entry, leaf}});
                 }
             }
@@ -196,32 +213,26 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
             for (const Planned& p : planned) {
                 // A worker that finished meanwhile starts it at once.
                 Slot& slot = slots[p.w];
-                if (slot.current.leaf == no_node) {
-                    slot.current = p.task;
-                    wake.push_back(&slot);
-                } else {
-                    slot.next = p.task;
-                }
+                if (slot.count == 0) wake.push_back(&slot);
+                slot.push(p.task);
             }
-            // A worker still idle takes over a next leaf that has not
-            // started (under the lock: its worker may start it any moment),
-            // under an entry its unprocessed results do not use.
+            // A worker still idle takes over another's last leaf that has
+            // not started (under the lock: its worker may start it any
+            // moment), under an entry it does not use (its unprocessed
+            // results may).
             for (unsigned w = 0; w < threads && !stop && !failure && !need_check; ++w) {
                 Slot& slot = slots[w];
-                if (slot.current.leaf != no_node) continue;
+                if (slot.count != 0) continue;
                 const auto donor =
-                    std::find_if(slots.begin(), slots.end(), [](const Slot& s) { return s.next.leaf != no_node; });
-                if (donor == slots.end()) break;
-                const auto awaits_completion = [&](int e) {
-                    return std::any_of(slot.finished.begin(), slot.finished.end(),
-                                       [&](const Finished& f) { return f.entry == e; });
-                };
-                int entry = static_cast<int>(2 * w);
-                if (awaits_completion(entry)) entry ^= 1;
-                if (awaits_completion(entry)) continue;  // both do
-                scheduler.move_assignment(donor->next.entry, entry);
-                slot.current = {entry, donor->next.leaf};
-                donor->next = {};
+                    std::max_element(slots.begin(), slots.end(), [](const Slot& a, const Slot& b) { return a.count < b.count; });
+                if (donor->count < 2) break;
+                int entry = static_cast<int>(queue_depth * w);
+                while (entry < static_cast<int>(queue_depth * (w + 1)) && slot.holds(entry)) ++entry;
+                if (entry == static_cast<int>(queue_depth * (w + 1))) continue;  // all await completion
+                const Task moved = donor->tasks[--donor->count];
+                donor->tasks[donor->count] = {};
+                scheduler.move_assignment(moved.entry, entry);
+                slot.push({entry, moved.leaf});
                 wake.push_back(&slot);
             }
             if (!wake.empty()) {

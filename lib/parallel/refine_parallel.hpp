@@ -3,7 +3,7 @@
 // quadtree (quadtree.hpp); one master thread keeps the queue of leaves with
 // work and hands a leaf to a worker only when its buffer zone shares no leaf
 // with the buffer zone of any leaf being refined or handed out (a busy
-// worker is given its next leaf ahead, so it never waits for the master
+// worker is given its next leaves ahead, so it seldom waits for the master
 // between leaves); each worker runs the
 // paper's Fig. 4 on its leaf (refine::LeafRefiner::refine_leaf: σ levels
 // i_min .. i_min + g), updates the buckets and counters of its zone, and

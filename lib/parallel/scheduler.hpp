@@ -56,8 +56,8 @@ public:
     // Queues a leaf that may have work (master thread only, leaf not held).
     void offer(NodeId leaf);
     // An ASSIGNMENT is a leaf handed out with its zone held, under an entry
-    // number the caller chooses among those not in use (a worker has two:
-    // the leaf it refines and the next one, handed out before it finishes).
+    // number the caller chooses among those not in use (a worker has a few:
+    // the leaf it refines and the next ones, handed out before it finishes).
     // Node::owner of the zone's leaves is entry + 1 meanwhile: the tag the
     // worker refines under.
     //

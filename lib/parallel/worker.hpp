@@ -156,25 +156,26 @@ private:
     // finest triangles), and their cells' counts matter only once the leaf
     // has split down to one level above them.  So a triangle two or more
     // levels below the leaf being refined, inside its square, is not
-    // counted but listed in the leaf as it is made: in the list for the
-    // child whose square holds it when it is also two levels below that
-    // child (LeafState::deferred_in_child; most are), else in the leaf's
-    // own (LeafState::deferred).  A split gives each child its list unread,
-    // and hands the own list down: entries of triangles that died are
-    // dropped, the triangles now only one level below a child (or that
-    // straddle two children) are counted, the others listed in a child.
+    // counted but listed in the leaf soon after it is made (sort_created):
+    // in the list for the child whose square holds it when it is also two
+    // levels below that child (LeafState::deferred_in_child; most are),
+    // else in the leaf's own (LeafState::deferred).  A split gives each
+    // child its list unread, and hands the own list down: entries of
+    // triangles that died are dropped, the triangles now only one level
+    // below a child (or that straddle two children) are counted, the
+    // others listed in a child.
     // Nothing looks at an entry before that: a listed triangle that dies
     // costs its 8 bytes until a split reads it, or until refinement ends (at
     // most 8 bytes per triangle ever made; the lists for the children keep
     // dead entries longer, and the batch below keeps many out: the pipe's
-    // peak at -g4 is 864-868 MiB, 887-892 with one list per leaf), and most
-    // of the final mesh is never counted.
+    // peak at -g4 is 873-875 MiB), and most of the final mesh is never
+    // counted.
     // (On the pipe the hand-downs read 3.8 million entries and pass 11.7
     // million on unread.  One list per leaf, all of it read at a split,
     // read 22 million, and 95% of its live entries went on to a child's
-    // list; holding new triangles in the pending list until the run ended,
-    // to list only the survivors, and sweeping dead entries out of growing
-    // lists read 39 and 31 million more.)
+    // list; holding new triangles without their circles in the pending
+    // list until the run ended, to list only the survivors, and sweeping
+    // dead entries out of growing lists read 39 and 31 million more.)
     // Invariant: a live triangle is counted, pending (or in the batch of
     // new ones, below; both are emptied when a run ends), or listed in
     // one leaf L: in L's own list when L's square holds it with room to
@@ -192,7 +193,7 @@ private:
     // at creation, through a ring of 256 deferrable triangles that listed
     // only those alive when they left it, executed 121 instructions per
     // triangle against 18 + 60 now; the batch is 8 KiB, which stays in the
-    // first-level cache, where 1024 missed it a third more often.)
+    // first-level cache, where 1024 missed it 30% more often.)
     void sort_created();
     // Where a triangle with this circumcircle may be deferred in leaf
     // `leaf` (whose geometry `at` describes): the list for the child its

@@ -369,8 +369,9 @@ bool Worker::should_split(const Node& n, LeafState& state) {
     const bool work_is_childrens = lowest >= 2 + static_cast<int>(run_.settings().granularity) ||
                                    (lowest < 0 && state.work.subsegment_entries() != 0);
     if (!work_is_childrens) return false;
+    // The count must be exact now: the batch may hold triangles to count.
     sort_created();
-    flush_pending();  // (the count must be exact now)
+    flush_pending();
     return n.count.load(std::memory_order_relaxed) == 0;
 }
 

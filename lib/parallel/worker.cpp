@@ -160,7 +160,6 @@ Worker::DeferralTargets Worker::deferral_targets(NodeId leaf) const {
     // bit: the verifier and later splits test against those.)
     const Node& n = tree_.node(leaf);
     DeferralTargets t;
-    t.level = n.level;
     t.band = tree_.two_levels_below(n.level);
     t.child_band = tree_.two_levels_below(n.level + 1);
     t.room = tree_.room(tree_.cell_square(n.level, n.ix, n.iy));

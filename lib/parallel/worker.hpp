@@ -199,7 +199,6 @@ private:
     // `leaf` (whose geometry `at` describes): the list for the child its
     // centre lies in, the leaf's own, or none (it must be counted).
     struct DeferralTargets {
-        int level;
         Quadtree::RadiusBand band, child_band;  // two levels below the leaf, below a child
         Quadtree::Room room;
         Quadtree::Room child_rooms[4];

@@ -328,27 +328,15 @@ void Worker::split(NodeId leaf) {
     LeafState& parent = *tree_.node(leaf).state;
     for (int q = 0; q < 4; ++q) tree_.node(tree_.node(leaf).child(q)).state->deferred.take(parent.deferred_in_child[q]);
     hand_down_deferred(leaf);
-    // The poor triangles go to the child their `where` names, one σ level
-    // down (the side halves; σ is clamped at both ends, see leaf.hpp) with
-    // the same shape rank, in the order they would be refined; the mesh is
-    // not looked at (stale entries go along and are skipped when popped).
-    // Only an entry whose `where` is used up is measured and routed afresh.
+    // The poor triangles go to the child their `where` names (see
+    // move_poor_to_children); the mesh is not looked at (stale entries go
+    // along and are skipped when popped).  Only an entry whose `where` is
+    // used up is measured and routed afresh.
     refine::Leaf& work = tree_.node(leaf).state->work;
     const Node& n = tree_.node(leaf);
-    for (int j = work.lowest_level(); j >= 0 && j < refine::Leaf::bucket_count; ++j) {
-        const int child_level = j == 0 || j == refine::Leaf::bucket_count - 1 ? j : j - 1;
-        refine::QueuedTriangle q;
-        int rank = 0;
-        while (work.pop_poor(j, q, &rank)) {
-            if (refine::Leaf::path_used_up(q.where)) {
-                route_triangle(q, false, s, leaf);
-                continue;
-            }
-            const int quadrant = refine::Leaf::first_quadrant(q.where);
-            q.where = refine::Leaf::in_child(q.where);
-            tree_.node(n.child(quadrant)).state->work.push_poor(q, child_level, rank);
-        }
-    }
+    refine::Leaf* const children[4] = {&tree_.node(n.child(0)).state->work, &tree_.node(n.child(1)).state->work,
+                                       &tree_.node(n.child(2)).state->work, &tree_.node(n.child(3)).state->work};
+    work.move_poor_to_children(children, [&](refine::QueuedTriangle q) { route_triangle(q, false, s, leaf); });
     refine::QueuedSubsegment e;
     while (work.pop_subsegment(e)) route_subsegment(e, leaf);
     // The emptied queues would otherwise hold their capacity (tens of

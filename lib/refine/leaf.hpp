@@ -172,14 +172,14 @@ public:
     // `where` names, at the σ level one down (the sides halve; σ is clamped
     // at both ends) with the same shape rank, and empties this leaf's
     // levels.  An entry whose path is used up goes to used_up(q) instead,
-    // to be placed afresh.  Each stack is moved whole: one pass counts each
-    // child's share, so that each child's stack grows once, and one copies,
-    // newest first, so that the children's stacks come out as popping this
-    // one and pushing each entry would leave them (the parallel refiner's
-    // order before; copying oldest first changed it and made the pipe's
-    // mesh 0.5% larger).  (Popping and pushing entry by entry took about 15
-    // ns an entry, 120 ms of the graded pipe's -j2 run, whose splits move
-    // 7.8 million; cachegrind at c = 1e-3: 62 million fewer instructions.)
+    // to be placed afresh.  Each stack is copied straight onto the
+    // children's, newest first, so that they come out as popping this one
+    // and pushing each entry would leave them (the parallel refiner's order
+    // before: copying oldest first made the pipe's mesh 0.5% larger).
+    // (Popping and pushing entry by entry took about 15 ns an entry, 120 ms
+    // of the graded pipe's -j2 run, whose splits move 7.8 million;
+    // cachegrind at c = 1e-3: 62 million fewer instructions.  Reserving
+    // each child's share first raised the pipe's peak by 25 MiB.)
     template <class UsedUp>
     void move_poor_to_children(Leaf* const children[4], UsedUp&& used_up) {
         std::vector<std::unique_ptr<Level>> levels;
@@ -194,15 +194,7 @@ public:
             for (int r = l->lowest_rank; r < rank_count; ++r) {
                 const std::vector<QueuedTriangle>& stack = l->ranks[r];
                 if (stack.empty()) continue;
-                std::size_t share[4] = {0, 0, 0, 0};
-                for (const QueuedTriangle& q : stack) ++share[first_quadrant(q.where)];
-                std::vector<QueuedTriangle>* into[4];
-                for (int c = 0; c < 4; ++c) {
-                    into[c] = nullptr;
-                    if (share[c] == 0) continue;
-                    into[c] = &children[c]->stack(child_level, r);
-                    into[c]->reserve(into[c]->size() + share[c]);
-                }
+                std::vector<QueuedTriangle>* into[4] = {nullptr, nullptr, nullptr, nullptr};
                 std::size_t moved[4] = {0, 0, 0, 0};
                 for (auto it = stack.rbegin(); it != stack.rend(); ++it) {
                     QueuedTriangle q = *it;
@@ -212,6 +204,7 @@ public:
                     }
                     const int c = first_quadrant(q.where);
                     q.where = in_child(q.where);
+                    if (into[c] == nullptr) into[c] = &children[c]->stack(child_level, r);
                     into[c]->push_back(q);
                     ++moved[c];
                 }

@@ -13,6 +13,7 @@
 #include "api/job_stages.hpp"
 #include "mesh/checker.hpp"
 #include "mesh/traverse.hpp"
+#include "parallel/refine_parallel.hpp"
 #include "refine/refine.hpp"
 #include "triangulate/conformity.hpp"
 
@@ -138,7 +139,7 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
         // Before -o2 changes the triangles; not counted as output time (as
         // in Triangle, whose "Output milliseconds" are the writing alone).
         const double before = clock.lap();
-        quality = api::quality_statistics(arrays);
+        quality = api::quality_statistics(arrays, parallel::thread_count(options.threads));
         clock.lap();
         result.write_seconds += before;
     }

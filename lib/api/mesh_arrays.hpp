@@ -72,7 +72,10 @@ void make_second_order(MeshArrays& mesh, const EdgeMarker& marker);
 // Returns, for each old vertex, its new index (or NeighbourSet::none).
 std::vector<std::uint32_t> jettison_unused_vertices(MeshArrays& mesh);
 
-// Triangle's "Mesh quality statistics" block for -V, as lines of text.
-std::vector<std::string> quality_statistics(const MeshArrays& mesh);
+// Triangle's "Mesh quality statistics" block for -V, as lines of text,
+// computed on up to `threads` threads over runs of `chunk_size` triangles
+// (the same text for any number of threads).
+std::vector<std::string> quality_statistics(const MeshArrays& mesh, unsigned threads = 1,
+                                            std::size_t chunk_size = 16384);
 
 }  // namespace gpdr::api

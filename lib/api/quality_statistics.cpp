@@ -5,8 +5,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <condition_variable>
 #include <limits>
+#include <mutex>
 #include <numbers>
+#include <thread>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -14,77 +18,190 @@
 
 namespace gpdr::api {
 
-std::vector<std::string> quality_statistics(const MeshArrays& mesh) {
-    constexpr std::array<double, 16> ratio_bounds{1.5, 2, 2.5, 3, 4, 6, 10, 15, 25, 50, 100, 300, 1000, 10000, 100000,
-                                                  std::numeric_limits<double>::infinity()};
+namespace {
+
+constexpr std::array<double, 16> ratio_bounds{1.5, 2, 2.5, 3, 4, 6, 10, 15, 25, 50, 100, 300, 1000, 10000, 100000,
+                                              std::numeric_limits<double>::infinity()};
+
+// The figures of a set of triangles; two tallies merge into the tally of
+// both sets (extremes and counts only: the result does not depend on how
+// the triangles were shared out, or in what order).
+struct Tally {
+    double min_area = std::numeric_limits<double>::infinity(), max_area = 0;
+    double min_edge2 = std::numeric_limits<double>::infinity(), max_edge2 = 0;
+    double min_altitude = std::numeric_limits<double>::infinity(), max_ratio = 0;
+    double min_angle = 180, max_angle = 0;
+    std::array<std::uint64_t, 16> ratio_histogram{};
+    std::array<std::uint64_t, 18> angle_histogram{};
+
+    void add(const std::array<double, 3>& px, const std::array<double, 3>& py) {
+        std::array<double, 3> edge2;  // edge2[k]: squared length of the edge opposite corner k
+        for (std::size_t k = 0; k < 3; ++k) {
+            const double dx = px[(k + 2) % 3] - px[(k + 1) % 3], dy = py[(k + 2) % 3] - py[(k + 1) % 3];
+            edge2[k] = dx * dx + dy * dy;
+        }
+        const double twice_area = std::abs((px[1] - px[0]) * (py[2] - py[0]) - (px[2] - px[0]) * (py[1] - py[0]));
+        const double longest2 = std::max({edge2[0], edge2[1], edge2[2]});
+        min_area = std::min(min_area, twice_area / 2);
+        max_area = std::max(max_area, twice_area / 2);
+        min_edge2 = std::min({min_edge2, edge2[0], edge2[1], edge2[2]});
+        max_edge2 = std::max(max_edge2, longest2);
+        // The shortest altitude stands on the longest edge.
+        const double altitude = twice_area / std::sqrt(longest2);
+        min_altitude = std::min(min_altitude, altitude);
+        const double ratio = std::sqrt(longest2) / altitude;
+        max_ratio = std::max(max_ratio, ratio);
+        std::size_t bin = 0;
+        while (bin + 1 < ratio_bounds.size() && ratio > ratio_bounds[bin]) ++bin;
+        ++ratio_histogram[bin];
+        for (std::size_t k = 0; k < 3; ++k) {
+            // The angle at corner k lies between the edges opposite k+1 and k+2.
+            const double a2 = edge2[(k + 1) % 3], b2 = edge2[(k + 2) % 3], c2 = edge2[k];
+            const double cosine = std::clamp((a2 + b2 - c2) / (2 * std::sqrt(a2 * b2)), -1.0, 1.0);
+            const double degrees = std::acos(cosine) * 180 / std::numbers::pi;
+            min_angle = std::min(min_angle, degrees);
+            max_angle = std::max(max_angle, degrees);
+            ++angle_histogram[std::min<std::size_t>(17, static_cast<std::size_t>(degrees / 10))];
+        }
+    }
+
+    void merge(const Tally& o) {
+        min_area = std::min(min_area, o.min_area);
+        max_area = std::max(max_area, o.max_area);
+        min_edge2 = std::min(min_edge2, o.min_edge2);
+        max_edge2 = std::max(max_edge2, o.max_edge2);
+        min_altitude = std::min(min_altitude, o.min_altitude);
+        max_ratio = std::max(max_ratio, o.max_ratio);
+        min_angle = std::min(min_angle, o.min_angle);
+        max_angle = std::max(max_angle, o.max_angle);
+        for (std::size_t i = 0; i < ratio_histogram.size(); ++i) ratio_histogram[i] += o.ratio_histogram[i];
+        for (std::size_t i = 0; i < angle_histogram.size(); ++i) angle_histogram[i] += o.angle_histogram[i];
+    }
+};
+
+// A run of triangles read from the source: three corners each.
+struct Chunk {
+    std::vector<std::uint32_t> corners;
+    std::size_t count = 0;
+};
+
+// Reads up to `capacity` triangles into `chunk`; false when none was left.
+bool fill(io::EleSource& source, std::size_t& left, std::size_t capacity, Chunk& chunk) {
+    if (left == 0) return false;
+    std::uint32_t corners[6];
+    std::vector<double> attributes(source.attribute_count);  // (read past)
+    chunk.count = std::min(capacity, left);
+    chunk.corners.resize(3 * capacity);
+    for (std::size_t i = 0; i < chunk.count; ++i) {
+        source.next(corners, attributes.data());
+        std::copy_n(corners, 3, &chunk.corners[3 * i]);
+    }
+    left -= chunk.count;
+    return true;
+}
+
+// The triangles come in mesh order and their corners lie anywhere in the
+// node array (hundreds of megabytes for a large mesh): each triangle's
+// coordinates are asked for a few triangles ahead, so that the cache misses
+// overlap instead of stalling each triangle in turn.
+void tally(const Chunk& chunk, const std::vector<double>& xy, Tally& into) {
+    constexpr std::size_t ahead = 16;
+    const auto ask = [&](std::size_t i) {
+        for (std::size_t k = 0; k < 3; ++k) __builtin_prefetch(&xy[2 * std::size_t{chunk.corners[3 * i + k]}]);
+    };
+    for (std::size_t i = 0; i < chunk.count && i < ahead; ++i) ask(i);
+    for (std::size_t i = 0; i < chunk.count; ++i) {
+        if (i + ahead < chunk.count) ask(i + ahead);
+        std::array<double, 3> px, py;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const std::size_t v = chunk.corners[3 * i + k];
+            px[k] = xy[2 * v];
+            py[k] = xy[2 * v + 1];
+        }
+        into.add(px, py);
+    }
+}
+
+// With several threads: this thread reads chunks from the source (which
+// only reads in order) into a few buffers, and every thread, this one
+// included when no buffer is free, tallies the chunks read so far.  The
+// arithmetic (three arc cosines per triangle) costs far more than reading.
+Tally tally_in_parallel(io::EleSource& source, const std::vector<double>& xy, unsigned threads, std::size_t chunk_size) {
+    std::vector<Chunk> chunks(2 * threads);
+    std::vector<Chunk*> free_chunks, ready;
+    for (Chunk& c : chunks) free_chunks.push_back(&c);
+    std::mutex mutex;
+    std::condition_variable cv;
+    bool read_all = false;
+    std::vector<Tally> tallies(threads);
+    // Takes a chunk that is ready and tallies it; false when none is and no
+    // more will come.
+    const auto consume = [&](std::unique_lock<std::mutex>& lock, Tally& into, bool wait) {
+        if (wait) cv.wait(lock, [&] { return !ready.empty() || read_all; });
+        if (ready.empty()) return false;
+        Chunk* c = ready.back();
+        ready.pop_back();
+        lock.unlock();
+        tally(*c, xy, into);
+        lock.lock();
+        free_chunks.push_back(c);
+        cv.notify_all();
+        return true;
+    };
+    std::vector<std::jthread> helpers;
+    for (unsigned h = 1; h < threads; ++h)
+        helpers.emplace_back([&, h] {
+            std::unique_lock lock(mutex);
+            while (consume(lock, tallies[h], true)) {
+            }
+        });
+    std::size_t left = source.count;
+    std::unique_lock lock(mutex);
+    while (left != 0) {
+        if (free_chunks.empty()) {
+            // Every buffer is read and waiting: tally one here, or wait
+            // for a helper to give one back.
+            if (!consume(lock, tallies[0], false)) cv.wait(lock, [&] { return !free_chunks.empty(); });
+            continue;
+        }
+        Chunk* c = free_chunks.back();
+        free_chunks.pop_back();
+        lock.unlock();
+        fill(source, left, chunk_size, *c);
+        lock.lock();
+        ready.push_back(c);
+        cv.notify_all();
+    }
+    read_all = true;
+    cv.notify_all();
+    while (consume(lock, tallies[0], false)) {
+    }
+    lock.unlock();
+    helpers.clear();  // (joined)
+    for (unsigned h = 1; h < threads; ++h) tallies[0].merge(tallies[h]);
+    return tallies[0];
+}
+
+}  // namespace
+
+std::vector<std::string> quality_statistics(const MeshArrays& mesh, unsigned threads, std::size_t chunk_size) {
     constexpr std::array<const char*, 16> ratio_labels{
         "1.1547 - 1.5      ", "   1.5 - 2        ", "     2 - 2.5      ", "   2.5 - 3        ",
         "     3 - 4        ", "     4 - 6        ", "     6 - 10       ", "    10 - 15       ",
         "    15 - 25       ", "    25 - 50       ", "    50 - 100      ", "   100 - 300      ",
         "   300 - 1000     ", "  1000 - 10000    ", " 10000 - 100000   ", "100000 -          "};
-    std::array<std::uint64_t, 16> ratio_histogram{};
-    std::array<std::uint64_t, 18> angle_histogram{};
-
-    const double inf = std::numeric_limits<double>::infinity();
-    double min_area = inf, max_area = 0, min_edge2 = inf, max_edge2 = 0;
-    double min_altitude = inf, max_ratio = 0, min_angle = 180, max_angle = 0;
-
+    io::EleSource triangles = triangle_source(mesh);
     const auto& xy = mesh.nodes.xy;
-    const io::EleSource triangles = triangle_source(mesh);
-    std::uint32_t corners[6];
-    std::vector<double> attributes(triangles.attribute_count);
-    // The triangles come in mesh order and their corners lie anywhere in
-    // the node array (hundreds of megabytes for a large mesh): a batch's
-    // corners are read first and their coordinates asked for, so that the
-    // cache misses overlap instead of stalling each triangle in turn.
-    constexpr std::size_t batch = 256;
-    std::array<std::uint32_t, 3 * batch> batch_corners;
-    for (std::size_t first = 0; first < triangles.count; first += batch) {
-        const std::size_t n = std::min(batch, triangles.count - first);
-        for (std::size_t i = 0; i < n; ++i) {
-            triangles.next(corners, attributes.data());
-            for (std::size_t k = 0; k < 3; ++k) {
-                batch_corners[3 * i + k] = corners[k];
-                __builtin_prefetch(&xy[2 * std::size_t{corners[k]}]);
-            }
-        }
-        for (std::size_t i = 0; i < n; ++i) {
-            std::array<double, 3> px, py, edge2;  // edge2[k]: squared length of the edge opposite corner k
-            for (std::size_t k = 0; k < 3; ++k) {
-                const std::size_t v = batch_corners[3 * i + k];
-                px[k] = xy[2 * v];
-                py[k] = xy[2 * v + 1];
-            }
-            for (std::size_t k = 0; k < 3; ++k) {
-                const double dx = px[(k + 2) % 3] - px[(k + 1) % 3], dy = py[(k + 2) % 3] - py[(k + 1) % 3];
-                edge2[k] = dx * dx + dy * dy;
-            }
-            const double twice_area =
-                std::abs((px[1] - px[0]) * (py[2] - py[0]) - (px[2] - px[0]) * (py[1] - py[0]));
-            const double longest2 = std::max({edge2[0], edge2[1], edge2[2]});
-            min_area = std::min(min_area, twice_area / 2);
-            max_area = std::max(max_area, twice_area / 2);
-            min_edge2 = std::min({min_edge2, edge2[0], edge2[1], edge2[2]});
-            max_edge2 = std::max(max_edge2, longest2);
-            // The shortest altitude stands on the longest edge.
-            const double altitude = twice_area / std::sqrt(longest2);
-            min_altitude = std::min(min_altitude, altitude);
-            const double ratio = std::sqrt(longest2) / altitude;
-            max_ratio = std::max(max_ratio, ratio);
-            std::size_t bin = 0;
-            while (bin + 1 < ratio_bounds.size() && ratio > ratio_bounds[bin]) ++bin;
-            ++ratio_histogram[bin];
-            for (std::size_t k = 0; k < 3; ++k) {
-                // The angle at corner k lies between the edges opposite k+1 and k+2.
-                const double a2 = edge2[(k + 1) % 3], b2 = edge2[(k + 2) % 3], c2 = edge2[k];
-                const double cosine = std::clamp((a2 + b2 - c2) / (2 * std::sqrt(a2 * b2)), -1.0, 1.0);
-                const double degrees = std::acos(cosine) * 180 / std::numbers::pi;
-                min_angle = std::min(min_angle, degrees);
-                max_angle = std::max(max_angle, degrees);
-                ++angle_histogram[std::min<std::size_t>(17, static_cast<std::size_t>(degrees / 10))];
-            }
-        }
+    Tally t;
+    if (threads > 1 && triangles.count > chunk_size) {
+        t = tally_in_parallel(triangles, xy, threads, chunk_size);
+    } else {
+        Chunk chunk;
+        std::size_t left = triangles.count;
+        while (fill(triangles, left, chunk_size, chunk)) tally(chunk, xy, t);
     }
+    const auto& [min_area, max_area, min_edge2, max_edge2, min_altitude, max_ratio, min_angle, max_angle,
+                 ratio_histogram, angle_histogram] = t;
     if (triangles.count == 0) return {};
 
     std::vector<std::string> lines;

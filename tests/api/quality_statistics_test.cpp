@@ -1,7 +1,8 @@
 // The -V "Mesh quality statistics" block: its figures for a mesh whose
 // angles and aspect ratios are known, and, for a mesh of several thousand
-// jittered triangles (read in batches: more than one, the last partial),
-// its extremes and histograms against a triangle-by-triangle computation.
+// jittered triangles (read in runs: more than one, the last partial), its
+// extremes and histograms against a triangle-by-triangle computation, and
+// the same text from any number of threads.
 
 #include <catch2/catch.hpp>
 
@@ -100,26 +101,36 @@ TEST_CASE("quality statistics of a 3 x 1 rectangle cut along its diagonal", "[ap
     CHECK(angles == std::vector<std::uint64_t>{0, 2, 0, 0, 0, 0, 0, 2, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0});
 }
 
-TEST_CASE("quality statistics of thousands of triangles match a triangle-by-triangle count", "[api][statistics]") {
-    // A 45 x 40 grid of jittered squares, each cut in two: 3600 triangles.
+namespace {
+
+// A 45 x 40 grid of jittered squares, each cut in two: 3600 triangles
+// (their coordinates and corners also left in xy and corners).
+MeshArrays jittered_grid(std::vector<double>& xy, std::vector<std::uint32_t>& corners) {
     const int nx = 45, ny = 40;
     std::mt19937_64 random(99);
     std::uniform_real_distribution<double> jitter(-0.3, 0.3);
-    std::vector<double> xy;
     for (int j = 0; j <= ny; ++j)
         for (int i = 0; i <= nx; ++i) {
             xy.push_back(i + jitter(random));
             xy.push_back(j + jitter(random));
         }
-    std::vector<std::uint32_t> corners;
     const auto id = [&](int i, int j) { return static_cast<std::uint32_t>(j * (nx + 1) + i); };
     for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) {
             corners.insert(corners.end(), {id(i, j), id(i + 1, j), id(i + 1, j + 1)});
             corners.insert(corners.end(), {id(i, j), id(i + 1, j + 1), id(i, j + 1)});
         }
-    const MeshArrays m = arrays(xy, corners);
-    const auto lines = gpdr::api::quality_statistics(m);
+    return arrays(xy, corners);
+}
+
+}  // namespace
+
+TEST_CASE("quality statistics of thousands of triangles match a triangle-by-triangle count", "[api][statistics]") {
+    std::vector<double> xy;
+    std::vector<std::uint32_t> corners;
+    const MeshArrays m = jittered_grid(xy, corners);
+    // Runs of 1000 triangles: more than one, the last partial.
+    const auto lines = gpdr::api::quality_statistics(m, 1, 1000);
 
     double min_angle = 180, max_angle = 0;
     std::vector<std::uint64_t> angles(18);
@@ -144,4 +155,18 @@ TEST_CASE("quality statistics of thousands of triangles match a triangle-by-tria
     std::uint64_t total = 0;
     for (auto r : ratios) total += r;
     CHECK(total == corners.size() / 3);
+}
+
+TEST_CASE("quality statistics are the same on any number of threads", "[api][statistics]") {
+    std::vector<double> xy;
+    std::vector<std::uint32_t> corners;
+    const MeshArrays m = jittered_grid(xy, corners);
+    const auto one = gpdr::api::quality_statistics(m);
+    REQUIRE(one.size() > 20);
+    // Runs of 7 to 1000 triangles (the last partial) shared among two to eight threads.
+    for (const unsigned threads : {2u, 3u, 8u})
+        for (const std::size_t chunk : {std::size_t{7}, std::size_t{100}, std::size_t{1000}}) {
+            INFO(threads << " threads, runs of " << chunk);
+            CHECK(gpdr::api::quality_statistics(m, threads, chunk) == one);
+        }
 }

@@ -3,6 +3,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <random>
+#include <string>
+
 #include "cli/mesh_files.hpp"
 
 using namespace gpdr::test;
@@ -166,6 +169,29 @@ TEST_CASE("with several threads the output files are written side by side, the s
         CHECK(without_last_line(dir.read(names[i])) == one_thread[i]);
     }
     CHECK(dir.files().size() == names.size() + 1);  // no temporary file left behind
+}
+
+TEST_CASE("the statistics of -V are the same on one thread and on several", "[cli][statistics][parallel]") {
+    // 12,000 random points: about 24,000 triangles, more than one run of
+    // the statistics (16384 triangles), and no refinement, so the mesh is
+    // the same for any thread count.
+    TempDir dir;
+    std::mt19937_64 random(5);
+    std::uniform_real_distribution<double> coordinate(0.0, 1.0);
+    std::string node = "12000 2 0 0\n";
+    for (int i = 1; i <= 12000; ++i)
+        node += std::to_string(i) + " " + std::to_string(coordinate(random)) + " " + std::to_string(coordinate(random)) + "\n";
+    dir.write("p.node", node);
+    const auto statistics = [](const std::string& out) {
+        const auto at = out.find("Mesh quality statistics:");
+        return at == std::string::npos ? std::string() : out.substr(at);
+    };
+    const auto r1 = run_gpdr(dir, "-VNE -j1 p.node");
+    REQUIRE(r1.status == 0);
+    const auto r4 = run_gpdr(dir, "-VNE -j4 p.node");
+    REQUIRE(r4.status == 0);
+    REQUIRE(statistics(r1.out).find("Angle histogram") != std::string::npos);
+    CHECK(statistics(r4.out) == statistics(r1.out));
 }
 
 namespace {

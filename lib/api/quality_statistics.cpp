@@ -1,6 +1,8 @@
 // The "Mesh quality statistics" block that -V prints, in Triangle's layout:
 // extreme areas, edge lengths, altitudes and aspect ratios, and histograms of
-// aspect ratio (longest edge over shortest altitude) and of all angles.
+// aspect ratio (longest edge over shortest altitude) and of all angles;
+// taken over runs of triangles, on several threads when asked (the graded
+// pipe's 15 million triangles took 1.3 s on one).
 
 #include <algorithm>
 #include <array>

@@ -76,10 +76,12 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
     struct Task {
         int entry = -1;
         NodeId leaf = no_node;
+        std::vector<NodeId> balance;  // Scheduler::balance_candidates
     };
     struct Finished {
         int entry;
         bool split, stopped, outgrew_root;
+        std::vector<NodeId> balanced;
         std::vector<Routed> outbox;
     };
     // Checked mode checks between leaves, with every worker idle: one leaf each.
@@ -90,9 +92,9 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
         Task tasks[queue_depth];
         unsigned count = 0;
         std::vector<Finished> finished;
-        void push(Task t) { tasks[count++] = t; }
+        void push(Task t) { tasks[count++] = std::move(t); }
         void pop_front() {
-            for (unsigned i = 1; i < count; ++i) tasks[i - 1] = tasks[i];
+            for (unsigned i = 1; i < count; ++i) tasks[i - 1] = std::move(tasks[i]);
             tasks[--count] = {};
         }
         bool holds(int entry) const {
@@ -124,7 +126,7 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
                 slot.cv.wait(lock, [&] { return quit || slot.count != 0; });
                 worker.times.waiting += seconds(t0, Clock::now());
                 if (quit) return;
-                const Task task = slot.tasks[0];
+                const Task task = std::move(slot.tasks[0]);
                 lock.unlock();
                 // The master is woken only now that the mutex is free: woken
                 // while the worker held it, it would find it taken and sleep
@@ -134,7 +136,7 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
                 tell_master = false;
                 bool split = false;
                 try {
-                    split = worker.run(task.leaf, task.entry + 1);
+                    split = worker.run(task.leaf, task.entry + 1, task.balance);
                 } catch (...) {
                     lock.lock();
                     if (!failure) failure = std::current_exception();
@@ -142,7 +144,9 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
                     worker.stopped = true;
                 }
                 lock.lock();
-                slot.finished.push_back({task.entry, split, worker.stopped, worker.outgrew_root, std::move(worker.outbox)});
+                slot.finished.push_back({task.entry, split, worker.stopped, worker.outgrew_root,
+                                         std::move(worker.balanced), std::move(worker.outbox)});
+                worker.balanced.clear();
                 worker.outbox.clear();
                 slot.pop_front();
                 // Otherwise the result waits for the next wake-up (the
@@ -181,7 +185,7 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
             lock.unlock();
             for (Finished& f : done) {
                 --busy;
-                scheduler.complete(f.entry, f.split, f.outbox, f.outgrew_root);
+                scheduler.complete(f.entry, f.split, f.balanced, f.outbox, f.outgrew_root);
                 if (f.stopped) stop = true;
                 need_check = options.checked;
             }
@@ -206,15 +210,15 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
                     }
                     ++busy;
                     held[w].push_back(entry);
-                    planned.push_back({w, {entry, leaf}});
+                    planned.push_back({w, {entry, leaf, scheduler.balance_candidates(entry)}});
                 }
             }
             lock.lock();
-            for (const Planned& p : planned) {
+            for (Planned& p : planned) {
                 // A worker that finished meanwhile starts it at once.
                 Slot& slot = slots[p.w];
                 if (slot.count == 0) wake.push_back(&slot);
-                slot.push(p.task);
+                slot.push(std::move(p.task));
             }
             // A worker still idle takes over another's last leaf that has
             // not started (under the lock: its worker may start it any
@@ -229,10 +233,10 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
                 int entry = static_cast<int>(queue_depth * w);
                 while (entry < static_cast<int>(queue_depth * (w + 1)) && slot.holds(entry)) ++entry;
                 if (entry == static_cast<int>(queue_depth * (w + 1))) continue;  // all await completion
-                const Task moved = donor->tasks[--donor->count];
+                Task moved = std::move(donor->tasks[--donor->count]);
                 donor->tasks[donor->count] = {};
                 scheduler.move_assignment(moved.entry, entry);
-                slot.push({entry, moved.leaf});
+                slot.push({entry, moved.leaf, std::move(moved.balance)});
                 wake.push_back(&slot);
             }
             if (!wake.empty()) {
@@ -329,9 +333,9 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in
             if (leaf == no_node) break;
             const auto t1 = Clock::now();
             report.master.managing += seconds(t0, t1);
-            const bool split = worker.run(leaf, 1);
+            const bool split = worker.run(leaf, 1, scheduler.balance_candidates(0));
             const auto t2 = Clock::now();
-            scheduler.complete(0, split, worker.outbox, worker.outgrew_root);
+            scheduler.complete(0, split, worker.balanced, worker.outbox, worker.outgrew_root);
             if (options.checked) check();
             report.master.managing += seconds(t2, Clock::now());
             if (worker.stopped) break;

@@ -132,6 +132,13 @@ NodeId Scheduler::assign(int entry, unsigned busy) {
         tree_.node(z).owner.store(entry + 1, std::memory_order_relaxed);
         flush_inbox(z);
     }
+    a.balance.clear();
+    const int level = tree_.node(chosen).level;
+    for (NodeId z : a.zone) {
+        const Node& n = tree_.node(z);
+        if (z != chosen && n.level + 2 <= level && !has_work(z) && n.count.load(std::memory_order_relaxed) == 0)
+            a.balance.push_back(z);
+    }
     ++report_.assignments;
     unsigned concurrent = 0;
     for (const Active& b : active_) concurrent += b.leaf != no_node ? 1 : 0;
@@ -146,26 +153,30 @@ void Scheduler::move_assignment(int from, int to) {
     for (NodeId z : active_[to].zone) tree_.node(z).owner.store(to + 1, std::memory_order_relaxed);
 }
 
-void Scheduler::complete(int entry, bool split, std::vector<Routed>& outbox, bool outgrew_root) {
+void Scheduler::publish_split(NodeId leaf) {
+    // Children before the parent turns internal: a worker that sees
+    // "internal" (acquire) finds the children's kinds set.
+    Node& n = tree_.node(leaf);
+    for (int q = 0; q < 4; ++q) {
+        Node& c = tree_.node(n.child(q));
+        c.kind.store(static_cast<std::uint8_t>(NodeKind::leaf), std::memory_order_release);
+        c.owner.store(0, std::memory_order_relaxed);
+    }
+    n.kind.store(static_cast<std::uint8_t>(NodeKind::internal), std::memory_order_release);
+    ++report_.splits;
+    report_.depth = std::max(report_.depth, int(n.level) + 1);
+}
+
+void Scheduler::complete(int entry, bool split, const std::vector<NodeId>& balanced, std::vector<Routed>& outbox,
+                         bool outgrew_root) {
     Active& a = active_[entry];
     const NodeId leaf = a.leaf;
-    if (split) {
-        // Publish the children before the parent turns internal: a worker
-        // that sees "internal" (acquire) finds the children's kinds set.
-        Node& n = tree_.node(leaf);
-        for (int q = 0; q < 4; ++q)
-            tree_.node(n.child(q)).kind.store(static_cast<std::uint8_t>(NodeKind::leaf), std::memory_order_release);
-        n.kind.store(static_cast<std::uint8_t>(NodeKind::internal), std::memory_order_release);
-        ++report_.splits;
-        report_.depth = std::max(report_.depth, int(n.level) + 1);
-    }
+    if (split) publish_split(leaf);
+    for (NodeId b : balanced) publish_split(b);
+    report_.balance_splits += balanced.size();
     for (NodeId z : a.zone) {
         info(z).held = false;
         tree_.node(z).owner.store(0, std::memory_order_relaxed);
-    }
-    if (split) {
-        const Node& n = tree_.node(leaf);
-        for (int q = 0; q < 4; ++q) tree_.node(n.child(q)).owner.store(0, std::memory_order_relaxed);
     }
     for (NodeId z : a.zone) {
         flush_inbox(z);
@@ -178,6 +189,7 @@ void Scheduler::complete(int entry, bool split, std::vector<Routed>& outbox, boo
     }
     a.leaf = no_node;
     a.zone.clear();
+    a.balance.clear();
     for (const auto& p : a.parked) queue_.push(p);
     a.parked.clear();
     for (const Routed& r : outbox) deliver(r);

@@ -362,7 +362,7 @@ bool Worker::should_split(const Node& n, LeafState& state) {
     return n.count.load(std::memory_order_relaxed) == 0;
 }
 
-bool Worker::run(NodeId leaf, std::int32_t tag) {
+bool Worker::run(NodeId leaf, std::int32_t tag, const std::vector<NodeId>& balance) {
     const auto t0 = Clock::now();
     current_ = leaf;
     current_targets_ = deferral_targets(leaf);
@@ -399,6 +399,18 @@ bool Worker::run(NodeId leaf, std::int32_t tag) {
     for (const auto& s : routing_subsegments_) route_subsegment(s, no_node);
     routing_subsegments_.clear();
     if (split_now) split(leaf);
+    // The zone's large idle leaves (see Scheduler::balance_candidates): the
+    // same split, allowed by the same rule (a count of 0 lets relation (9)
+    // hold for the children; the counts are exact now).  Routing may have
+    // given one work: it then waits to be handed out.
+    balanced.clear();
+    for (const NodeId e : balance) {
+        const Node& b = tree_.node(e);
+        if (stopped || b.level >= max_level || !b.state->work.idle() || b.count.load(std::memory_order_relaxed) != 0)
+            continue;
+        split(e);
+        balanced.push_back(e);
+    }
     current_ = no_node;
     tag_ = 0;
     times.managing += seconds_since(t1);

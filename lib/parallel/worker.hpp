@@ -117,8 +117,11 @@ public:
     void count_all();
     // Refines leaf `leaf`, whose zone the master holds for this run under
     // `tag` (Node::owner): Fig. 4 lines 1-12, routing of handed-off work,
-    // and the split (line 13).  Returns whether the leaf split.
-    bool run(NodeId leaf, std::int32_t tag);
+    // and the split (line 13).  Returns whether the leaf split.  Then splits
+    // those of `balance` (leaves of the zone, Scheduler::balance_candidates)
+    // that are still idle and whose count is 0, and lists them in
+    // `balanced`.
+    bool run(NodeId leaf, std::int32_t tag, const std::vector<NodeId>& balance = {});
 
     void tagged_triangles_gone(std::span<const mesh::TaggedTriangle> gone) override;
     void triangle_created(mesh::TriangleId t, std::uint32_t generation, const geometry::Circle& circumcircle) override;
@@ -127,6 +130,7 @@ public:
 
     refine::RefineReport report;
     std::vector<Routed> outbox;  // handed to the master after each run
+    std::vector<NodeId> balanced;  // (see run)
     ThreadTimes times;
     std::uint64_t handed_off_local = 0;
     std::uint64_t relation9_exceptions = 0;

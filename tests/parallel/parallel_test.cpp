@@ -127,6 +127,25 @@ TEST_CASE("parallel refinement of a PSLG with a hole and a small angle", "[paral
     }
 }
 
+TEST_CASE("idle leaves beside the leaves refined split too, and every invariant holds", "[parallel]") {
+    // The root square is several times the unit square's size: the space
+    // around the domain is large leaves that never get work, which the
+    // workers refining the domain's edge split (Scheduler::balance_candidates).
+    triangulate::Pslg p;
+    p.points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    p.segments = {0, 1, 1, 2, 2, 3, 3, 0};
+    const auto s = settings_for(20, 2e-4);
+    for (unsigned threads : {1u, 2u, 3u}) {
+        mesh::Mesh m = cdt(p);
+        ParallelReport report;
+        refine_checked(m, s, threads, 1, true, &report);
+        INFO("threads " << threads << ": " << report.splits << " splits, " << report.checks << " checks");
+        CHECK(report.checks > 0);
+        CHECK(report.balance_splits > 0);
+        CHECK(report.balance_splits < report.splits);
+    }
+}
+
 TEST_CASE("the Steiner limit stops every worker with a valid mesh", "[parallel]") {
     mesh::Mesh m = point_set_mesh(random_points(200, 3));
     auto s = settings_for(30, 1e-4);

@@ -6,7 +6,7 @@
 #
 #   scripts/bench-graded.sh [THREADS ...]      gpdr with -j1, then each THREADS
 #                                              at each granularity of GRANULARITY
-#                                              (default "1 2 3 4")
+#                                              (default "1 2 3 4 5")
 #   GRADING_C=1e-3 scripts/bench-graded.sh 2   a smaller run
 #   TRIANGLE_GRADED=/path/to/triangle-graded scripts/bench-graded.sh 2
 #
@@ -63,7 +63,7 @@ for round in $(seq "$rounds"); do
       row "$round" "gpdr -j1" "$GPDR" "pq20j1${EXTRA:-}" "$input" --unsuitable "$lib"
       continue
     fi
-    for g in ${GRANULARITY:-1 2 3 4}; do
+    for g in ${GRANULARITY:-1 2 3 4 5}; do
       row "$round" "gpdr -j$n -g$g" "$GPDR" "pq20j${n}g$g${EXTRA:-}" "$input" --unsuitable "$lib"
     done
   done

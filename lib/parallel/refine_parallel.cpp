@@ -265,7 +265,7 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
 void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in, const ParallelOptions& options,
                      ParallelReport& report) {
     const unsigned threads = thread_count(options.threads);
-    const unsigned granularity = options.granularity != 0 ? options.granularity : default_granularity;
+    const unsigned granularity = options.granularity != 0 ? options.granularity : default_granularity(threads);
     report.threads = threads;
     report.granularity = granularity;
     refine::RefineSettings settings = settings_in;

@@ -70,7 +70,7 @@ inline unsigned thread_count(unsigned requested) {
 
 struct ParallelOptions {
     unsigned threads = 0;      // 0: thread_count(0)
-    unsigned granularity = 0;  // 0: default_granularity
+    unsigned granularity = 0;  // 0: default_granularity(threads)
     // Verify the quadtree (relation (9) for every leaf, exact counters,
     // leaves tiling the root) after every leaf refinement (the master waits
     // until no worker is busy first), and buffer-zone exclusivity at every
@@ -79,12 +79,16 @@ struct ParallelOptions {
     bool one_leaf_for_one_thread = false;
 };
 
-// Granularity when none is given, by measurement on 2 cores
-// (scripts/bench-graded.sh, tests/parallel/bench_test.cpp): -g4 was fastest
-// for -j2 on the graded pipe (15M triangles) and a uniform square (1.5M);
-// -g1 and -g2 make so many small leaves that the master and the leaves'
-// memory dominate, -g5 and -g6 were no faster and balance worse.
-inline constexpr unsigned default_granularity = 4;
+// Granularity when none is given, for `threads` workers, by measurement.
+// On 2 cores (scripts/bench-graded.sh, interleaved rounds): -g5 refined the
+// graded pipe (15M triangles) with -j2 in a median 0.53x -j1's time over six
+// rounds against 0.59x for -g4, and a uniform square (15M) in 0.51-0.57x
+// against 0.53-0.70x: with two workers fewer, larger leaves (1,750 against
+// 6,400 on the pipe) cost less upkeep and still balance.  -g1 and -g2 make
+// so many small leaves that the master and the leaves' memory dominate;
+// -g6 balances worse.  More workers need more leaves: -g4 is what an
+// earlier session measured on 16 cores (-g3 was no faster there).
+inline unsigned default_granularity(unsigned threads) { return threads <= 2 ? 5 : 4; }
 
 // Refines `mesh` (the input refine::refine_mesh takes) in parallel.  Throws
 // what refine_mesh throws; a worker's exception is rethrown on the calling
@@ -93,7 +97,7 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings, c
                      ParallelReport& report);
 
 // The job pipeline's entry: threads 0 = hardware threads, granularity 0 =
-// default_granularity.
+// default_granularity(threads).
 inline void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings, unsigned threads,
                             unsigned granularity, ParallelReport& report) {
     ParallelOptions o;

@@ -169,18 +169,18 @@ TEST_CASE("timing report has one entry per worker and the API defaults", "[paral
     ParallelReport report;
     refine_parallel(m, settings_for(20, 1e-3), 2, 0, report);
     CHECK(report.threads == 2);
-    CHECK(report.granularity == default_granularity);
+    CHECK(report.granularity == default_granularity(2));
     REQUIRE(report.workers.size() == 2);
     CHECK(report.workers[0].refining + report.workers[1].refining > 0);
     CHECK(report.assignments > 0);
 }
 
-TEST_CASE("stress: random point sets and PSLGs, -j2..-j8, -g1..-g4", "[parallel][stress]") {
+TEST_CASE("stress: random point sets and PSLGs, -j2..-j8, -g1..-g5", "[parallel][stress]") {
     std::mt19937 rng(2024);
     int runs = 0;
     for (int i = 0; i < 240; ++i) {
         const unsigned threads = 2 + rng() % 7;
-        const unsigned g = 1 + rng() % 4;
+        const unsigned g = 1 + rng() % 5;
         const double angle = 20 + (rng() % 14);
         const bool pslg = i % 2 == 1;
         mesh::Mesh m = pslg ? cdt(random_pslg(static_cast<std::uint32_t>(i)))

@@ -76,7 +76,7 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
     struct Task {
         int entry = -1;
         NodeId leaf = no_node;
-        std::vector<NodeId> balance;  // Scheduler::balance_candidates
+        std::vector<NodeId> balance;  // Scheduler::take_balance_candidates
     };
     struct Finished {
         int entry;
@@ -210,7 +210,7 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
                     }
                     ++busy;
                     held[w].push_back(entry);
-                    planned.push_back({w, {entry, leaf, scheduler.balance_candidates(entry)}});
+                    planned.push_back({w, {entry, leaf, scheduler.take_balance_candidates(entry)}});
                 }
             }
             lock.lock();
@@ -333,7 +333,7 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in
             if (leaf == no_node) break;
             const auto t1 = Clock::now();
             report.master.managing += seconds(t0, t1);
-            const bool split = worker.run(leaf, 1, scheduler.balance_candidates(0));
+            const bool split = worker.run(leaf, 1, scheduler.take_balance_candidates(0));
             const auto t2 = Clock::now();
             scheduler.complete(0, split, worker.balanced, worker.outbox, worker.outgrew_root);
             if (options.checked) check();

@@ -47,7 +47,7 @@ struct ParallelReport {
 
     std::uint64_t assignments = 0;     // leaves handed to workers
     std::uint64_t splits = 0;          // leaf splits
-    std::uint64_t balance_splits = 0;  // of them, idle leaves split beside the leaf refined (Scheduler::balance_candidates)
+    std::uint64_t balance_splits = 0;  // of them, idle leaves split beside the leaf refined (Scheduler::take_balance_candidates)
     std::uint64_t leaves = 0;          // leaves at the end
     int depth = 0;                     // deepest leaf level
     unsigned most_concurrent = 0;      // most leaves held at once (refined or handed out next)

@@ -134,11 +134,8 @@ NodeId Scheduler::assign(int entry, unsigned busy) {
     }
     a.balance.clear();
     const int level = tree_.node(chosen).level;
-    for (NodeId z : a.zone) {
-        const Node& n = tree_.node(z);
-        if (z != chosen && n.level + 2 <= level && !has_work(z) && n.count.load(std::memory_order_relaxed) == 0)
-            a.balance.push_back(z);
-    }
+    for (NodeId z : a.zone)
+        if (tree_.node(z).level + 2 <= level) a.balance.push_back(z);
     ++report_.assignments;
     unsigned concurrent = 0;
     for (const Active& b : active_) concurrent += b.leaf != no_node ? 1 : 0;
@@ -189,7 +186,6 @@ void Scheduler::complete(int entry, bool split, const std::vector<NodeId>& balan
     }
     a.leaf = no_node;
     a.zone.clear();
-    a.balance.clear();
     for (const auto& p : a.parked) queue_.push(p);
     a.parked.clear();
     for (const Routed& r : outbox) deliver(r);

@@ -64,9 +64,9 @@ public:
     // The next leaf for entry `entry`, its zone held; no_node if none can be
     // handed out now (`busy`: the assignments not completed).
     NodeId assign(int entry, unsigned busy);
-    // Leaves of the zone of entry's assignment that its worker may split
-    // besides the leaf (Worker::run): idle leaves two or more levels above
-    // it, whose own count was 0 when it was handed out.
+    // The leaves of the zone of entry's assignment two or more levels above
+    // its leaf, handed over once: its worker splits those that are idle with
+    // a count of 0 when its run ends (Worker::run).
     //
     // Why.  A leaf without work is never handed out, so it never splits: a
     // large one (empty space between the domain and the root's sides, or a
@@ -79,11 +79,11 @@ public:
     // the size of the leaves being refined beside them: the master then
     // scheduled for 0.18 s, and -j2 refined that square in 0.53-0.70x
     // -j1's time instead of 0.77-0.89x (four interleaved rounds).
-    const std::vector<NodeId>& balance_candidates(int entry) const { return active_[entry].balance; }
+    std::vector<NodeId> take_balance_candidates(int entry) { return std::move(active_[entry].balance); }
     // The assignment of entry `from`, not started, moves to entry `to`.
     void move_assignment(int from, int to);
     // The worker refining entry's leaf returned it (split or not, and
-    // `balanced`: the candidates it split too): frees its zone, applies the
+    // `balanced`: the balance candidates it split too): frees its zone, applies the
     // splits, takes the work it routed out of its zone.
     void complete(int entry, bool split, const std::vector<NodeId>& balanced, std::vector<Routed>& outbox,
                   bool outgrew_root);
@@ -103,7 +103,7 @@ private:
         // entry assignable sooner; waiting for the one that blocked it only
         // delays it.
         std::vector<std::pair<long, NodeId>> parked;
-        std::vector<NodeId> balance;  // balance_candidates
+        std::vector<NodeId> balance;  // until take_balance_candidates
     };
     // Publishes a split its worker made: children first, then the parent.
     void publish_split(NodeId leaf);

@@ -399,10 +399,10 @@ bool Worker::run(NodeId leaf, std::int32_t tag, const std::vector<NodeId>& balan
     for (const auto& s : routing_subsegments_) route_subsegment(s, no_node);
     routing_subsegments_.clear();
     if (split_now) split(leaf);
-    // The zone's large idle leaves (see Scheduler::balance_candidates): the
-    // same split, allowed by the same rule (a count of 0 lets relation (9)
-    // hold for the children; the counts are exact now).  Routing may have
-    // given one work: it then waits to be handed out.
+    // The zone's large idle leaves (see Scheduler::take_balance_candidates):
+    // the same split, allowed by the same rule (a count of 0 lets relation
+    // (9) hold for the children; the counts are exact now).  A leaf with
+    // work waits to be handed out instead.
     balanced.clear();
     for (const NodeId e : balance) {
         const Node& b = tree_.node(e);

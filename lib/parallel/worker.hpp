@@ -118,9 +118,8 @@ public:
     // Refines leaf `leaf`, whose zone the master holds for this run under
     // `tag` (Node::owner): Fig. 4 lines 1-12, routing of handed-off work,
     // and the split (line 13).  Returns whether the leaf split.  Then splits
-    // those of `balance` (leaves of the zone, Scheduler::balance_candidates)
-    // that are still idle and whose count is 0, and lists them in
-    // `balanced`.
+    // those of `balance` (leaves of the zone, Scheduler::take_balance_candidates)
+    // that are idle and whose count is 0, and lists them in `balanced`.
     bool run(NodeId leaf, std::int32_t tag, const std::vector<NodeId>& balance = {});
 
     void tagged_triangles_gone(std::span<const mesh::TaggedTriangle> gone) override;

@@ -130,7 +130,7 @@ TEST_CASE("parallel refinement of a PSLG with a hole and a small angle", "[paral
 TEST_CASE("idle leaves beside the leaves refined split too, and every invariant holds", "[parallel]") {
     // The root square is several times the unit square's size: the space
     // around the domain is large leaves that never get work, which the
-    // workers refining the domain's edge split (Scheduler::balance_candidates).
+    // workers refining the domain's edge split (Scheduler::take_balance_candidates).
     triangulate::Pslg p;
     p.points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
     p.segments = {0, 1, 1, 2, 2, 3, 3, 0};

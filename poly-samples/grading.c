@@ -67,17 +67,17 @@
 #ifdef __cplusplus
 extern "C"
 #endif
-int triunsuitable(double *org, double *dest, double *apex, double area)
-{
-  /* The centroid: the mean of the three corners. */
-  double x = (org[0] + dest[0] + apex[0]) / 3.0;
-  double y = (org[1] + dest[1] + apex[1]) / 3.0;
+    int
+    triunsuitable(double* org, double* dest, double* apex, double area) {
+    /* The centroid: the mean of the three corners. */
+    double x = (org[0] + dest[0] + apex[0]) / 3.0;
+    double y = (org[1] + dest[1] + apex[1]) / 3.0;
 
-  /* The paper's bound at the centroid; the +1 keeps it positive at the focus
-   * itself, so refinement there stops too. */
-  double dx = x - GRADING_X;
-  double dy = y - GRADING_Y;
-  double bound = GRADING_C * (sqrt(dx * dx + dy * dy) + 1.0);
+    /* The paper's bound at the centroid; the +1 keeps it positive at the focus
+     * itself, so refinement there stops too. */
+    double dx = x - GRADING_X;
+    double dy = y - GRADING_Y;
+    double bound = GRADING_C * (sqrt(dx * dx + dy * dy) + 1.0);
 
-  return area > bound;
+    return area > bound;
 }

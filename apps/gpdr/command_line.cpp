@@ -11,8 +11,8 @@
 #include <string_view>
 #include <vector>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include <gpdr/errors.hpp>
 #include <gpdr/file_names.hpp>
@@ -50,7 +50,8 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
             best_distance = d;
         }
     }
-    if (!best.empty()) throw UsageError(fmt::format("unknown option {}; did you mean {}?", name, best));
+    if (!best.empty())
+        throw UsageError(fmt::format("unknown option {}; did you mean {}?", name, best));
     throw UsageError(fmt::format("unknown option {} (gpdr -h lists the options)", name));
 }
 
@@ -74,7 +75,8 @@ public:
         app_.add_option_function<std::string>(
             "--unsuitable",
             [&options](const std::string& path) {
-                if (path.empty()) throw UsageError("--unsuitable needs the path of a shared object");
+                if (path.empty())
+                    throw UsageError("--unsuitable needs the path of a shared object");
                 options.unsuitable_library = path;
                 options.user_test = true;  // naming the test asks for it, as -u does
             },
@@ -104,8 +106,8 @@ public:
         try {
             app_.parse(group);  // consumes `group`
         } catch (const CLI::ConversionError&) {
-            const std::string_view value = used == 2 ? std::string_view(argv[i + 1])
-                                                     : arg.substr(name.size() + 1);
+            const std::string_view value =
+                used == 2 ? std::string_view(argv[i + 1]) : arg.substr(name.size() + 1);
             throw UsageError(fmt::format("{} needs a whole number, not '{}'", name, value));
         } catch (const CLI::ParseError& e) {
             const std::string_view what = e.what();

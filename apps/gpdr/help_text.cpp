@@ -12,9 +12,7 @@
 
 namespace gpdr::app {
 
-std::string version_text() {
-    return fmt::format("gpdr {}\n", GPDR_VERSION);
-}
+std::string version_text() { return fmt::format("gpdr {}\n", GPDR_VERSION); }
 
 std::string usage_text() {
     return "Usage: gpdr [-prq__a__uAcDjevngBPNEIOXzo_YS__iFlsCQVh] [--threads N]\n"

@@ -25,16 +25,23 @@ int run(int argc, const char* const* argv) {
     using gpdr::app::CommandLine;
     const CommandLine line = gpdr::app::parse_command_line(argc, argv);
     switch (line.action) {
-        case CommandLine::Action::usage: fmt::print("{}", gpdr::app::usage_text()); return 0;
-        case CommandLine::Action::help: fmt::print("{}", gpdr::app::help_text()); return 0;
-        case CommandLine::Action::version: fmt::print("{}", gpdr::app::version_text()); return 0;
-        case CommandLine::Action::run: break;
+        case CommandLine::Action::usage:
+            fmt::print("{}", gpdr::app::usage_text());
+            return 0;
+        case CommandLine::Action::help:
+            fmt::print("{}", gpdr::app::help_text());
+            return 0;
+        case CommandLine::Action::version:
+            fmt::print("{}", gpdr::app::version_text());
+            return 0;
+        case CommandLine::Action::run:
+            break;
     }
     // &triunsuitable is null unless the user linked one in; the weak
     // reference is taken here, in main's object (see unsuitable.hpp).
     const gpdr::app::LoadedPlugins loaded = gpdr::app::load_plugins(line.options, &triunsuitable);
-    const gpdr::JobResult result = gpdr::run_job(
-        line.options, gpdr::app::printing_sink(line.options, stderr), loaded.plugins);
+    const gpdr::JobResult result =
+        gpdr::run_job(line.options, gpdr::app::printing_sink(line.options, stderr), loaded.plugins);
     return gpdr::app::report_result(line.options, result, stdout, stderr);
 }
 

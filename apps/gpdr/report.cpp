@@ -9,7 +9,8 @@ namespace gpdr::app {
 
 std::string format_warning(const Warning& warning) {
     if (warning.file.empty()) return fmt::format("gpdr: warning: {}", warning.message);
-    if (warning.line == 0) return fmt::format("gpdr: {}: warning: {}", warning.file, warning.message);
+    if (warning.line == 0)
+        return fmt::format("gpdr: {}: warning: {}", warning.file, warning.message);
     return fmt::format("gpdr: {}:{}: warning: {}", warning.file, warning.line, warning.message);
 }
 
@@ -21,8 +22,7 @@ WarningSink printing_sink(const Options& options, std::FILE* err) {
     };
 }
 
-int report_result(const Options& options, const JobResult& result, std::FILE* out,
-                  std::FILE* err) {
+int report_result(const Options& options, const JobResult& result, std::FILE* out, std::FILE* err) {
     int status = 0;
     if (!options.quiet)
         for (const std::string& file : result.files_written) fmt::print(out, "Wrote {}\n", file);

@@ -21,7 +21,6 @@ WarningSink printing_sink(const Options& options, std::FILE* err);
 
 // Prints the outcome of a finished job and returns the exit status: 1 when a
 // -C check found problems, otherwise 0.
-int report_result(const Options& options, const JobResult& result, std::FILE* out,
-                  std::FILE* err);
+int report_result(const Options& options, const JobResult& result, std::FILE* out, std::FILE* err);
 
 }  // namespace gpdr::app

@@ -38,15 +38,16 @@ std::string ms(double seconds) { return fmt::format("{:.0f}", seconds * 1000); }
 
 // -V: Triangle's timing and count lines, before the quality block.
 std::vector<std::string> summary_lines(const JobResult& r, const Options& options, bool refining,
-                                       const refine::RefineReport& refined, std::uint64_t conforming_points) {
+                                       const refine::RefineReport& refined,
+                                       std::uint64_t conforming_points) {
     std::vector<std::string> lines{
         fmt::format("Read milliseconds:  {}", ms(r.read_seconds)),
         fmt::format("{} milliseconds:  {}", options.poly || options.refine ? "Mesh" : "Delaunay",
                     ms(r.triangulate_seconds)),
         fmt::format("Quality milliseconds:  {}", ms(r.refine_seconds)),
         fmt::format("Output milliseconds:  {}", ms(r.write_seconds)),
-        fmt::format("Total running milliseconds:  {}",
-                    ms(r.read_seconds + r.triangulate_seconds + r.refine_seconds + r.write_seconds)),
+        fmt::format("Total running milliseconds:  {}", ms(r.read_seconds + r.triangulate_seconds +
+                                                          r.refine_seconds + r.write_seconds)),
         "",
         "Statistics:",
         "",
@@ -61,11 +62,13 @@ std::vector<std::string> summary_lines(const JobResult& r, const Options& option
         lines.push_back(fmt::format("  Mesh subsegments (constrained edges): {}", r.segments));
     if (refining || conforming_points)
         lines.push_back(fmt::format("  Steiner points added: {} ({} by refinement, {} on segments)",
-                                    refined.steiner_points + conforming_points, refined.steiner_points,
+                                    refined.steiner_points + conforming_points,
+                                    refined.steiner_points,
                                     refined.segment_splits + conforming_points));
     if (refining)
-        lines.push_back(fmt::format("  Triangles below the angle bound because of small input angles: {}",
-                                    refined.left_small_input_angle));
+        lines.push_back(
+            fmt::format("  Triangles below the angle bound because of small input angles: {}",
+                        refined.left_small_input_angle));
     return lines;
 }
 
@@ -92,7 +95,8 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
     refine::RefineReport refined;
     std::vector<std::string> parallel_lines;
     if (refining) {
-        refine::RefineSettings settings = api::refine_settings(options, plugins, input.poly ? &*input.poly : nullptr);
+        refine::RefineSettings settings =
+            api::refine_settings(options, plugins, input.poly ? &*input.poly : nullptr);
         settings.criteria.triangle_max_area = tri.area_bounds.get();
         settings.criteria.diametral_circles = options.conforming_delaunay;
         settings.segment_ends = tri.segment_ends;
@@ -100,11 +104,14 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
         // there are vertex attributes to interpolate.
         settings.record_new_vertices = input.nodes.data.attribute_count > 0;
         if (settings.steiner_limit)
-            settings.max_steiner = settings.max_steiner > tri.steiner_points ? settings.max_steiner - tri.steiner_points : 0;
+            settings.max_steiner = settings.max_steiner > tri.steiner_points
+                                       ? settings.max_steiner - tri.steiner_points
+                                       : 0;
         api::warn_before_refinement(options, warn);
         parallel_lines = api::refine(tri.mesh, settings, options, refined);
         api::warn_after_refinement(refined, warn);
-        tri.new_vertices.insert(tri.new_vertices.end(), refined.new_vertices.begin(), refined.new_vertices.end());
+        tri.new_vertices.insert(tri.new_vertices.end(), refined.new_vertices.begin(),
+                                refined.new_vertices.end());
         refined.new_vertices = {};
     }
     result.refine_seconds = clock.lap();
@@ -121,18 +128,19 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
     // Write.
     // Neighbours cost 12 bytes per triangle: only the outputs that are
     // derived from them get them.
-    const bool neighbours = options.write_neighbours || options.write_edges || options.write_voronoi ||
-                            options.write_off || options.order == 2;
+    const bool neighbours = options.write_neighbours || options.write_edges ||
+                            options.write_voronoi || options.write_off || options.order == 2;
     // The triangle array itself only for what is derived from it.
     const bool materialise = neighbours || options.jettison;
-    api::MeshArrays arrays = api::mesh_to_arrays(tri.mesh, std::move(input.nodes.data), result.input_vertices,
-                                                 tri.new_vertices, tri.triangle_attribute_count,
-                                                 tri.region_attributes, neighbours, materialise);
+    api::MeshArrays arrays = api::mesh_to_arrays(
+        tri.mesh, std::move(input.nodes.data), result.input_vertices, tri.new_vertices,
+        tri.triangle_attribute_count, tri.region_attributes, neighbours, materialise);
     tri.new_vertices = {};
     result.vertices = arrays.nodes.size() - tri.duplicates;
     result.triangles = arrays.triangle_count;
     result.hull_edges = mesh::count_hull_edges(tri.mesh);
-    result.edges = (3 * result.triangles + result.hull_edges) / 2;  // each edge has two sides but the hull's
+    result.edges =
+        (3 * result.triangles + result.hull_edges) / 2;  // each edge has two sides but the hull's
     result.segments = tri.mesh.subsegments().size();
     std::vector<std::string> quality;
     if (options.verbosity > 0) {

@@ -42,8 +42,8 @@ Input read_input(const Options& options, const FileNames& names, const WarningSi
 // it was made.
 struct Triangulated {
     mesh::Mesh mesh;
-    std::uint64_t duplicates = 0;     // input vertices left out
-    std::uint64_t steiner_points = 0; // vertices -D added
+    std::uint64_t duplicates = 0;      // input vertices left out
+    std::uint64_t steiner_points = 0;  // vertices -D added
     // Vertices added on segments so far, for attribute interpolation.
     std::vector<refine::NewVertex> new_vertices;
     // Input segment ends (2 per segment), for refinement's small-angle rule.
@@ -63,32 +63,32 @@ Triangulated triangulate_input(const Options& options, Input& input, const Warni
 // Refinement: whether the switches ask for it, its settings (throws
 // UsageError for -u with no function), and warnings before and after.
 bool wants_refinement(const Options& options);
-refine::RefineSettings refine_settings(const Options& options, const JobPlugins& plugins, const PolyFile* poly);
+refine::RefineSettings refine_settings(const Options& options, const JobPlugins& plugins,
+                                       const PolyFile* poly);
 void warn_before_refinement(const Options& options, const WarningSink& warn);
 // Refines on one thread (-j1, or -S, whose limit is exact only there) or in
 // parallel; returns the -V lines on the threads' time (none for one thread).
-std::vector<std::string> refine(mesh::Mesh& mesh, const refine::RefineSettings& settings, const Options& options,
-                                refine::RefineReport& report);
+std::vector<std::string> refine(mesh::Mesh& mesh, const refine::RefineSettings& settings,
+                                const Options& options, refine::RefineReport& report);
 void warn_after_refinement(const refine::RefineReport& report, const WarningSink& warn);
 
 // The finished mesh as arrays.  `nodes` are the input vertices (ids 0..n-1 of
 // the mesh; attributes and markers kept); the vertices the mesh added after
 // them follow in id order, skipping ids claimed but never used, with their
 // attributes interpolated from `added` (refinement's record of each new
-// vertex: on a subsegment, or in a triangle).  Vertex markers follow Triangle: a non-zero input marker is
-// kept, otherwise a vertex on a subsegment takes its marker, otherwise a
-// vertex on the boundary gets 1 and any other 0.
-// Triangles get `attribute_count` attributes each from `region_attributes`
-// by their region index.  The neighbour array is filled only when asked for;
+// vertex: on a subsegment, or in a triangle).  Vertex markers follow Triangle: a non-zero input
+// marker is kept, otherwise a vertex on a subsegment takes its marker, otherwise a vertex on the
+// boundary gets 1 and any other 0. Triangles get `attribute_count` attributes each from
+// `region_attributes` by their region index.  The neighbour array is filled only when asked for;
 // without `materialise` the triangles stay in the mesh, which must then
 // outlive the arrays (MeshArrays::stream), and so must region_attributes.
 // The coordinates of all vertices come from the mesh, which keeps the input
 // ones exactly: the caller may free nodes.xy once the mesh is built, as long
 // as the other arrays of `nodes` keep their input_count entries.
 MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t input_count,
-                          std::span<const refine::NewVertex> added,
-                          std::uint32_t attribute_count, std::span<const double> region_attributes,
-                          bool with_neighbours, bool materialise);
+                          std::span<const refine::NewVertex> added, std::uint32_t attribute_count,
+                          std::span<const double> region_attributes, bool with_neighbours,
+                          bool materialise);
 
 // The marker of mesh edge {a, b} (Triangle's rules): a subsegment's own
 // marker if non-zero, else 1 on the boundary, else 0.
@@ -98,7 +98,7 @@ EdgeMarker edge_markers(const mesh::Mesh& mesh);
 struct OutputRequest {
     const Options* options = nullptr;
     const FileNames* names = nullptr;
-    int base = 1;                 // numbering base of the run
+    int base = 1;                    // numbering base of the run
     const PolyFile* poly = nullptr;  // the input PSLG (holes, regions), if any
     bool write_hull_poly = false;    // -c on a point set: .poly of the hull
 };

@@ -47,7 +47,8 @@ Circumcentre circumcentre_of(const MeshArrays& m, std::size_t t) {
     // Solve [xdo xao; ydo yao] (xi, eta) = (dx, dy) by Cramer's rule; the
     // determinant is denominator / 2.
     const double det = denominator / 2.0;
-    return {x_of(m, a) + dx, y_of(m, a) + dy, (dx * yao - dy * xao) / det, (xdo * dy - ydo * dx) / det};
+    return {x_of(m, a) + dx, y_of(m, a) + dy, (dx * yao - dy * xao) / det,
+            (xdo * dy - ydo * dx) / det};
 }
 
 }  // namespace
@@ -56,7 +57,8 @@ io::EleSource triangle_source(const MeshArrays& mesh) {
     if (mesh.stream) return mesh.stream();
     const EleSet& ele = mesh.triangles;
     const std::uint32_t nc = ele.corners_per_triangle, na = ele.attribute_count;
-    return {ele.size(), nc, na, [&ele, nc, na, t = std::size_t{0}](std::uint32_t* corners, double* attributes) mutable {
+    return {ele.size(), nc, na,
+            [&ele, nc, na, t = std::size_t{0}](std::uint32_t* corners, double* attributes) mutable {
                 std::copy_n(&ele.corners[t * nc], nc, corners);
                 std::copy_n(ele.attributes.data() + t * na, na, attributes);
                 ++t;
@@ -104,7 +106,9 @@ VoronoiDiagram voronoi_of(const MeshArrays& mesh) {
         v.vertices.xy[2 * t] = c.x;
         v.vertices.xy[2 * t + 1] = c.y;
         for (std::uint32_t i = 0; i < attributes; ++i) {
-            const auto at = [&](int k) { return mesh.nodes.attributes[std::size_t{corner(mesh, t, k)} * attributes + i]; };
+            const auto at = [&](int k) {
+                return mesh.nodes.attributes[std::size_t{corner(mesh, t, k)} * attributes + i];
+            };
             v.vertices.attributes[t * attributes + i] =
                 at(0) + c.xi * (at(1) - at(0)) + c.eta * (at(2) - at(0));
         }
@@ -151,7 +155,8 @@ void make_second_order(MeshArrays& mesh, const EdgeMarker& marker) {
             nodes.xy.push_back((y_of(mesh, a) + y_of(mesh, b)) / 2);
             for (std::uint32_t i = 0; i < attributes; ++i) {
                 nodes.attributes.push_back((nodes.attributes[std::size_t{a} * attributes + i] +
-                                            nodes.attributes[std::size_t{b} * attributes + i]) / 2);
+                                            nodes.attributes[std::size_t{b} * attributes + i]) /
+                                           2);
             }
             const std::uint32_t n = neighbour(mesh, t, k);
             if (markers) nodes.markers.push_back(marker(a, b, n == none));
@@ -182,8 +187,9 @@ std::vector<std::uint32_t> jettison_unused_vertices(MeshArrays& mesh) {
         renumber[v] = next;
         nodes.xy[2 * std::size_t{next}] = nodes.xy[2 * v];
         nodes.xy[2 * std::size_t{next} + 1] = nodes.xy[2 * v + 1];
-        std::copy_n(nodes.attributes.begin() + static_cast<std::ptrdiff_t>(v * attributes), attributes,
-                    nodes.attributes.begin() + static_cast<std::ptrdiff_t>(std::size_t{next} * attributes));
+        std::copy_n(
+            nodes.attributes.begin() + static_cast<std::ptrdiff_t>(v * attributes), attributes,
+            nodes.attributes.begin() + static_cast<std::ptrdiff_t>(std::size_t{next} * attributes));
         if (nodes.has_markers()) nodes.markers[next] = nodes.markers[v];
         ++next;
     }

@@ -11,7 +11,8 @@ namespace gpdr::api {
 
 EdgeMarker edge_markers(const mesh::Mesh& mesh) {
     return [&mesh](std::uint32_t a, std::uint32_t b, bool boundary) {
-        if (const auto* s = mesh.subsegments().find(mesh::VertexId{a}, mesh::VertexId{b}); s && s->marker != 0)
+        if (const auto* s = mesh.subsegments().find(mesh::VertexId{a}, mesh::VertexId{b});
+            s && s->marker != 0)
             return s->marker;
         return boundary ? 1 : 0;
     };
@@ -23,7 +24,8 @@ constexpr std::uint32_t none = NeighbourSet::none;
 
 // Attributes of the added vertices: Triangle interpolates linearly, on the
 // subsegment a new vertex splits or in the triangle that contained it.
-void interpolate_attributes(const mesh::Mesh& mesh, NodeSet& nodes, const std::vector<std::uint32_t>& number,
+void interpolate_attributes(const mesh::Mesh& mesh, NodeSet& nodes,
+                            const std::vector<std::uint32_t>& number,
                             std::span<const refine::NewVertex> added) {
     const std::uint32_t na = nodes.attribute_count;
     if (na == 0) return;
@@ -34,7 +36,8 @@ void interpolate_attributes(const mesh::Mesh& mesh, NodeSet& nodes, const std::v
         const std::size_t row = std::size_t{number[index(n.vertex)]} * na;
         if (n.on_segment) {
             for (std::uint32_t i = 0; i < na; ++i)
-                nodes.attributes[row + i] = (1 - n.t) * attribute(n.from, i) + n.t * attribute(n.to, i);
+                nodes.attributes[row + i] =
+                    (1 - n.t) * attribute(n.from, i) + n.t * attribute(n.to, i);
             continue;
         }
         // Barycentric weights of the new vertex in the triangle that held it.
@@ -47,16 +50,17 @@ void interpolate_attributes(const mesh::Mesh& mesh, NodeSet& nodes, const std::v
         const double wc = ((b.x - a.x) * (p.y - a.y) - (p.x - a.x) * (b.y - a.y)) / det;
         for (std::uint32_t i = 0; i < na; ++i)
             nodes.attributes[row + i] = (1 - wb - wc) * attribute(n.corners[0], i) +
-                                        wb * attribute(n.corners[1], i) + wc * attribute(n.corners[2], i);
+                                        wb * attribute(n.corners[1], i) +
+                                        wc * attribute(n.corners[2], i);
     }
 }
 
 }  // namespace
 
 MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t input_count,
-                          std::span<const refine::NewVertex> added,
-                          std::uint32_t attribute_count, std::span<const double> region_attributes,
-                          bool with_neighbours, bool materialise) {
+                          std::span<const refine::NewVertex> added, std::uint32_t attribute_count,
+                          std::span<const double> region_attributes, bool with_neighbours,
+                          bool materialise) {
     MeshArrays out;
 
     // Vertex numbers: the input vertices keep theirs (duplicates included,
@@ -90,7 +94,9 @@ MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t inp
     std::uint32_t count = 0;
     if (with_neighbours) {
         triangle_number.assign(mesh.triangle_end(), none);
-        mesh::for_each_triangle(mesh, [&](mesh::TriangleId id, const mesh::Triangle&) { triangle_number[index(id)] = count++; });
+        mesh::for_each_triangle(mesh, [&](mesh::TriangleId id, const mesh::Triangle&) {
+            triangle_number[index(id)] = count++;
+        });
         out.neighbours.neighbours.reserve(3 * std::size_t{count});
     } else {
         mesh::for_each_triangle(mesh, [&](mesh::TriangleId, const mesh::Triangle&) { ++count; });
@@ -103,16 +109,18 @@ MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t inp
         // shared by the passes (the -V statistics and the .ele file).
         auto shared_number = std::make_shared<const std::vector<std::uint32_t>>(number);
         out.stream = [&mesh, shared_number, count, attribute_count, region_attributes] {
-            return io::EleSource{count, 3, attribute_count,
-                                 [&mesh, shared_number, attribute_count, region_attributes,
-                                  slot = std::uint32_t{0}](std::uint32_t* corners, double* attributes) mutable {
-                                     while (!mesh.triangle(mesh::TriangleId{slot}).live()) ++slot;
-                                     const mesh::Triangle& t = mesh.triangle(mesh::TriangleId{slot++});
-                                     for (int k = 0; k < 3; ++k) corners[k] = (*shared_number)[index(t.v[k])];
-                                     const std::size_t row = std::size_t{t.region} * attribute_count;
-                                     for (std::uint32_t i = 0; i < attribute_count; ++i)
-                                         attributes[i] = row + i < region_attributes.size() ? region_attributes[row + i] : 0.0;
-                                 }};
+            return io::EleSource{
+                count, 3, attribute_count,
+                [&mesh, shared_number, attribute_count, region_attributes, slot = std::uint32_t{0}](
+                    std::uint32_t* corners, double* attributes) mutable {
+                    while (!mesh.triangle(mesh::TriangleId{slot}).live()) ++slot;
+                    const mesh::Triangle& t = mesh.triangle(mesh::TriangleId{slot++});
+                    for (int k = 0; k < 3; ++k) corners[k] = (*shared_number)[index(t.v[k])];
+                    const std::size_t row = std::size_t{t.region} * attribute_count;
+                    for (std::uint32_t i = 0; i < attribute_count; ++i)
+                        attributes[i] =
+                            row + i < region_attributes.size() ? region_attributes[row + i] : 0.0;
+                }};
         };
     } else {
         out.triangles.corners.reserve(3 * std::size_t{count});
@@ -121,12 +129,13 @@ MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t inp
             for (int k = 0; k < 3; ++k) {
                 out.triangles.corners.push_back(number[index(t.v[k])]);
                 if (with_neighbours)
-                    out.neighbours.neighbours.push_back(t.n[k].is_none() ? none
-                                                                         : triangle_number[index(t.n[k].triangle())]);
+                    out.neighbours.neighbours.push_back(
+                        t.n[k].is_none() ? none : triangle_number[index(t.n[k].triangle())]);
             }
             const std::size_t row = std::size_t{t.region} * attribute_count;
             for (std::uint32_t i = 0; i < attribute_count; ++i)
-                out.triangles.attributes.push_back(row + i < region_attributes.size() ? region_attributes[row + i] : 0.0);
+                out.triangles.attributes.push_back(
+                    row + i < region_attributes.size() ? region_attributes[row + i] : 0.0);
         });
     }
 
@@ -135,13 +144,14 @@ MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t inp
     nodes.markers.resize(nodes.size(), 0);
     std::vector<bool> fixed(nodes.size());
     for (std::size_t v = 0; v < nodes.size(); ++v) fixed[v] = nodes.markers[v] != 0;
-    mesh.subsegments().for_each([&](mesh::VertexId a, mesh::VertexId b, const mesh::SubsegmentInfo& s) {
-        for (const auto v : {number[index(a)], number[index(b)]})
-            if (!fixed[v] && s.marker != 0) {
-                nodes.markers[v] = s.marker;
-                fixed[v] = true;
-            }
-    });
+    mesh.subsegments().for_each(
+        [&](mesh::VertexId a, mesh::VertexId b, const mesh::SubsegmentInfo& s) {
+            for (const auto v : {number[index(a)], number[index(b)]})
+                if (!fixed[v] && s.marker != 0) {
+                    nodes.markers[v] = s.marker;
+                    fixed[v] = true;
+                }
+        });
     mesh::for_each_hull_edge(mesh, [&](const mesh::EdgeView& e) {
         for (const auto v : {number[index(e.from)], number[index(e.to)]})
             if (!fixed[v]) nodes.markers[v] = 1;

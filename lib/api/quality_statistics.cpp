@@ -22,8 +22,9 @@ namespace gpdr::api {
 
 namespace {
 
-constexpr std::array<double, 16> ratio_bounds{1.5, 2, 2.5, 3, 4, 6, 10, 15, 25, 50, 100, 300, 1000, 10000, 100000,
-                                              std::numeric_limits<double>::infinity()};
+constexpr std::array<double, 16> ratio_bounds{
+    1.5, 2,  2.5, 3,   4,    6,     10,     15,
+    25,  50, 100, 300, 1000, 10000, 100000, std::numeric_limits<double>::infinity()};
 
 // The figures of a set of triangles; two tallies merge into the tally of
 // both sets (extremes and counts only: the result does not depend on how
@@ -39,10 +40,12 @@ struct Tally {
     void add(const std::array<double, 3>& px, const std::array<double, 3>& py) {
         std::array<double, 3> edge2;  // edge2[k]: squared length of the edge opposite corner k
         for (std::size_t k = 0; k < 3; ++k) {
-            const double dx = px[(k + 2) % 3] - px[(k + 1) % 3], dy = py[(k + 2) % 3] - py[(k + 1) % 3];
+            const double dx = px[(k + 2) % 3] - px[(k + 1) % 3],
+                         dy = py[(k + 2) % 3] - py[(k + 1) % 3];
             edge2[k] = dx * dx + dy * dy;
         }
-        const double twice_area = std::abs((px[1] - px[0]) * (py[2] - py[0]) - (px[2] - px[0]) * (py[1] - py[0]));
+        const double twice_area =
+            std::abs((px[1] - px[0]) * (py[2] - py[0]) - (px[2] - px[0]) * (py[1] - py[0]));
         const double longest2 = std::max({edge2[0], edge2[1], edge2[2]});
         min_area = std::min(min_area, twice_area / 2);
         max_area = std::max(max_area, twice_area / 2);
@@ -76,8 +79,10 @@ struct Tally {
         max_ratio = std::max(max_ratio, o.max_ratio);
         min_angle = std::min(min_angle, o.min_angle);
         max_angle = std::max(max_angle, o.max_angle);
-        for (std::size_t i = 0; i < ratio_histogram.size(); ++i) ratio_histogram[i] += o.ratio_histogram[i];
-        for (std::size_t i = 0; i < angle_histogram.size(); ++i) angle_histogram[i] += o.angle_histogram[i];
+        for (std::size_t i = 0; i < ratio_histogram.size(); ++i)
+            ratio_histogram[i] += o.ratio_histogram[i];
+        for (std::size_t i = 0; i < angle_histogram.size(); ++i)
+            angle_histogram[i] += o.angle_histogram[i];
     }
 };
 
@@ -109,7 +114,8 @@ bool fill(io::EleSource& source, std::size_t& left, std::size_t capacity, Chunk&
 void tally(const Chunk& chunk, const std::vector<double>& xy, Tally& into) {
     constexpr std::size_t ahead = 16;
     const auto ask = [&](std::size_t i) {
-        for (std::size_t k = 0; k < 3; ++k) __builtin_prefetch(&xy[2 * std::size_t{chunk.corners[3 * i + k]}]);
+        for (std::size_t k = 0; k < 3; ++k)
+            __builtin_prefetch(&xy[2 * std::size_t{chunk.corners[3 * i + k]}]);
     };
     for (std::size_t i = 0; i < chunk.count && i < ahead; ++i) ask(i);
     for (std::size_t i = 0; i < chunk.count; ++i) {
@@ -128,7 +134,8 @@ void tally(const Chunk& chunk, const std::vector<double>& xy, Tally& into) {
 // only reads in order) into a few buffers, and every thread, this one
 // included when no buffer is free, tallies the chunks read so far.  The
 // arithmetic (three arc cosines per triangle) costs far more than reading.
-Tally tally_in_parallel(io::EleSource& source, const std::vector<double>& xy, unsigned threads, std::size_t chunk_size) {
+Tally tally_in_parallel(io::EleSource& source, const std::vector<double>& xy, unsigned threads,
+                        std::size_t chunk_size) {
     std::vector<Chunk> chunks(2 * threads);
     std::vector<Chunk*> free_chunks, ready;
     for (Chunk& c : chunks) free_chunks.push_back(&c);
@@ -154,8 +161,7 @@ Tally tally_in_parallel(io::EleSource& source, const std::vector<double>& xy, un
     for (unsigned h = 1; h < threads; ++h)
         helpers.emplace_back([&, h] {
             std::unique_lock lock(mutex);
-            while (consume(lock, tallies[h], true)) {
-            }
+            while (consume(lock, tallies[h], true)) {}
         });
     std::size_t left = source.count;
     std::unique_lock lock(mutex);
@@ -163,7 +169,8 @@ Tally tally_in_parallel(io::EleSource& source, const std::vector<double>& xy, un
         if (free_chunks.empty()) {
             // Every buffer is read and waiting: tally one here, or wait
             // for a helper to give one back.
-            if (!consume(lock, tallies[0], false)) cv.wait(lock, [&] { return !free_chunks.empty(); });
+            if (!consume(lock, tallies[0], false))
+                cv.wait(lock, [&] { return !free_chunks.empty(); });
             continue;
         }
         Chunk* c = free_chunks.back();
@@ -176,8 +183,7 @@ Tally tally_in_parallel(io::EleSource& source, const std::vector<double>& xy, un
     }
     read_all = true;
     cv.notify_all();
-    while (consume(lock, tallies[0], false)) {
-    }
+    while (consume(lock, tallies[0], false)) {}
     lock.unlock();
     helpers.clear();  // (joined)
     for (unsigned h = 1; h < threads; ++h) tallies[0].merge(tallies[h]);
@@ -186,7 +192,8 @@ Tally tally_in_parallel(io::EleSource& source, const std::vector<double>& xy, un
 
 }  // namespace
 
-std::vector<std::string> quality_statistics(const MeshArrays& mesh, unsigned threads, std::size_t chunk_size) {
+std::vector<std::string> quality_statistics(const MeshArrays& mesh, unsigned threads,
+                                            std::size_t chunk_size) {
     constexpr std::array<const char*, 16> ratio_labels{
         "1.1547 - 1.5      ", "   1.5 - 2        ", "     2 - 2.5      ", "   2.5 - 3        ",
         "     3 - 4        ", "     4 - 6        ", "     6 - 10       ", "    10 - 15       ",
@@ -202,33 +209,36 @@ std::vector<std::string> quality_statistics(const MeshArrays& mesh, unsigned thr
         std::size_t left = triangles.count;
         while (fill(triangles, left, chunk_size, chunk)) tally(chunk, xy, t);
     }
-    const auto& [min_area, max_area, min_edge2, max_edge2, min_altitude, max_ratio, min_angle, max_angle,
-                 ratio_histogram, angle_histogram] = t;
+    const auto& [min_area, max_area, min_edge2, max_edge2, min_altitude, max_ratio, min_angle,
+                 max_angle, ratio_histogram, angle_histogram] = t;
     if (triangles.count == 0) return {};
 
     std::vector<std::string> lines;
     lines.push_back("Mesh quality statistics:");
     lines.emplace_back();
-    lines.push_back(fmt::format("  Smallest area: {:16.5g}   |  Largest area: {:16.5g}", min_area, max_area));
-    lines.push_back(fmt::format("  Shortest edge: {:16.5g}   |  Longest edge: {:16.5g}", std::sqrt(min_edge2),
-                                std::sqrt(max_edge2)));
-    lines.push_back(fmt::format("  Shortest altitude: {:12.5g}   |  Largest aspect ratio: {:8.5g}", min_altitude,
-                                max_ratio));
+    lines.push_back(
+        fmt::format("  Smallest area: {:16.5g}   |  Largest area: {:16.5g}", min_area, max_area));
+    lines.push_back(fmt::format("  Shortest edge: {:16.5g}   |  Longest edge: {:16.5g}",
+                                std::sqrt(min_edge2), std::sqrt(max_edge2)));
+    lines.push_back(fmt::format("  Shortest altitude: {:12.5g}   |  Largest aspect ratio: {:8.5g}",
+                                min_altitude, max_ratio));
     lines.emplace_back();
     lines.push_back("  Triangle aspect ratio histogram:");
     for (std::size_t i = 0; i < 8; ++i) {
-        lines.push_back(fmt::format("  {}:  {:8}    | {}:  {:8}", ratio_labels[i], ratio_histogram[i],
-                                    ratio_labels[i + 8], ratio_histogram[i + 8]));
+        lines.push_back(fmt::format("  {}:  {:8}    | {}:  {:8}", ratio_labels[i],
+                                    ratio_histogram[i], ratio_labels[i + 8],
+                                    ratio_histogram[i + 8]));
     }
     lines.push_back("  (Aspect ratio is longest edge divided by shortest altitude)");
     lines.emplace_back();
-    lines.push_back(fmt::format("  Smallest angle: {:15.5g}   |  Largest angle: {:15.5g}", min_angle, max_angle));
+    lines.push_back(fmt::format("  Smallest angle: {:15.5g}   |  Largest angle: {:15.5g}",
+                                min_angle, max_angle));
     lines.emplace_back();
     lines.push_back("  Angle histogram:");
     for (std::size_t i = 0; i < 9; ++i) {
-        lines.push_back(fmt::format("    {:3} - {:3} degrees:  {:8}    |    {:3} - {:3} degrees:  {:8}", 10 * i,
-                                    10 * i + 10, angle_histogram[i], 10 * i + 90, 10 * i + 100,
-                                    angle_histogram[i + 9]));
+        lines.push_back(fmt::format(
+            "    {:3} - {:3} degrees:  {:8}    |    {:3} - {:3} degrees:  {:8}", 10 * i,
+            10 * i + 10, angle_histogram[i], 10 * i + 90, 10 * i + 100, angle_histogram[i + 9]));
     }
     return lines;
 }

@@ -34,7 +34,8 @@ Input read_input(const Options& options, const FileNames& names, const WarningSi
             in.poly_file = names.in_poly;
             in.poly = std::move(poly.data);
         }
-        if (options.regional_area) in.areas = io::read_area(names.in_area, base, ele.data.size(), warn).data;
+        if (options.regional_area)
+            in.areas = io::read_area(names.in_area, base, ele.data.size(), warn).data;
         in.triangles = std::move(ele.data);
     }
     return in;

@@ -23,7 +23,8 @@ bool wants_refinement(const Options& o) {
     return o.quality || o.area_limit || o.regional_area || o.user_test;
 }
 
-refine::RefineSettings refine_settings(const Options& o, const JobPlugins& plugins, const PolyFile* poly) {
+refine::RefineSettings refine_settings(const Options& o, const JobPlugins& plugins,
+                                       const PolyFile* poly) {
     refine::RefineSettings s;
     if (o.quality) s.criteria.min_angle_degrees = o.min_angle;
     if (o.area_limit) s.criteria.max_area = o.max_area;
@@ -36,7 +37,8 @@ refine::RefineSettings refine_settings(const Options& o, const JobPlugins& plugi
     if (o.user_test) {
         if (!plugins.triunsuitable)
             throw UsageError(
-                "-u needs a triunsuitable() function: load one with --unsuitable PATH.so (built with "
+                "-u needs a triunsuitable() function: load one with --unsuitable PATH.so (built "
+                "with "
                 "'cc -shared -fPIC -O2 -o PATH.so yours.c'), or link it into gpdr (cmake "
                 "-DGPDR_TRIUNSUITABLE=yours.c; see README, \"Grading with triunsuitable()\")");
         s.criteria.user_test = plugins.triunsuitable;
@@ -51,14 +53,15 @@ refine::RefineSettings refine_settings(const Options& o, const JobPlugins& plugi
 
 void warn_before_refinement(const Options& o, const WarningSink& warn) {
     if (o.quality && o.min_angle > 34.0)
-        warn(Warning{"", 0,
-                     fmt::format("a minimum angle of {} degrees may be out of reach (Triangle's refinement "
-                                 "usually works up to about 33); gpdr stops with a valid mesh if it is",
-                                 o.min_angle)});
+        warn(Warning{
+            "", 0,
+            fmt::format("a minimum angle of {} degrees may be out of reach (Triangle's refinement "
+                        "usually works up to about 33); gpdr stops with a valid mesh if it is",
+                        o.min_angle)});
 }
 
-std::vector<std::string> refine(mesh::Mesh& mesh, const refine::RefineSettings& settings, const Options& o,
-                                refine::RefineReport& report) {
+std::vector<std::string> refine(mesh::Mesh& mesh, const refine::RefineSettings& settings,
+                                const Options& o, refine::RefineReport& report) {
     parallel::ParallelOptions p;
     p.threads = o.threads;
     p.granularity = o.granularity;
@@ -82,40 +85,48 @@ std::vector<std::string> refine(mesh::Mesh& mesh, const refine::RefineSettings& 
     if (r.threads <= 1) return lines;
     // The GPDR paper's Fig. 5 (right): where each thread's time went.
     const auto line = [](const char* who, unsigned i, const parallel::ThreadTimes& t) {
-        return fmt::format("  {}{}: refining {:.0f} ms, managing {:.0f} ms, waiting {:.0f} ms", who, i,
-                           t.refining * 1000, t.managing * 1000, t.waiting * 1000);
+        return fmt::format("  {}{}: refining {:.0f} ms, managing {:.0f} ms, waiting {:.0f} ms", who,
+                           i, t.refining * 1000, t.managing * 1000, t.waiting * 1000);
     };
     lines.emplace_back();
-    lines.push_back(fmt::format("Parallel refinement: {} worker threads, granularity {}, {} leaves, {} assignments",
-                                r.threads, r.granularity, r.leaves, r.assignments));
-    lines.push_back(fmt::format("  master: managing {:.0f} ms, waiting {:.0f} ms", r.master.managing * 1000,
-                                r.master.waiting * 1000));
-    for (std::size_t w = 0; w < r.workers.size(); ++w) lines.push_back(line("worker ", unsigned(w + 1), r.workers[w]));
+    lines.push_back(fmt::format(
+        "Parallel refinement: {} worker threads, granularity {}, {} leaves, {} assignments",
+        r.threads, r.granularity, r.leaves, r.assignments));
+    lines.push_back(fmt::format("  master: managing {:.0f} ms, waiting {:.0f} ms",
+                                r.master.managing * 1000, r.master.waiting * 1000));
+    for (std::size_t w = 0; w < r.workers.size(); ++w)
+        lines.push_back(line("worker ", unsigned(w + 1), r.workers[w]));
     return lines;
 }
 
 void warn_after_refinement(const refine::RefineReport& r, const WarningSink& warn) {
     using Stop = refine::RefineReport::Stop;
     if (r.stopped == Stop::steiner_limit)
-        warn(Warning{"", 0, fmt::format("refinement stopped at the Steiner point limit (-S) after {} points; "
-                                        "{} triangles still fail the quality bounds",
-                                        r.steiner_points, r.left_budget)});
+        warn(Warning{
+            "", 0,
+            fmt::format("refinement stopped at the Steiner point limit (-S) after {} points; "
+                        "{} triangles still fail the quality bounds",
+                        r.steiner_points, r.left_budget)});
     if (r.stopped == Stop::safety_limit)
-        warn(Warning{"", 0, fmt::format("refinement stopped after {} Steiner points because new points no "
-                                        "longer made progress (the bounds may be out of reach); the mesh "
-                                        "is valid but {} triangles still fail them",
-                                        r.steiner_points, r.left_budget)});
+        warn(Warning{"", 0,
+                     fmt::format("refinement stopped after {} Steiner points because new points no "
+                                 "longer made progress (the bounds may be out of reach); the mesh "
+                                 "is valid but {} triangles still fail them",
+                                 r.steiner_points, r.left_budget)});
     if (r.left_precision)
-        warn(Warning{"", 0, fmt::format("{} triangles were left as they are because refining them further "
-                                        "would exhaust floating-point precision",
-                                        r.left_precision)});
+        warn(Warning{"", 0,
+                     fmt::format("{} triangles were left as they are because refining them further "
+                                 "would exhaust floating-point precision",
+                                 r.left_precision)});
     if (r.left_no_split)
-        warn(Warning{"", 0, fmt::format("{} triangles were left as they are because -Y/-YY forbids "
-                                        "splitting the segments they encroach",
-                                        r.left_no_split)});
+        warn(Warning{"", 0,
+                     fmt::format("{} triangles were left as they are because -Y/-YY forbids "
+                                 "splitting the segments they encroach",
+                                 r.left_no_split)});
     if (r.left_other)
-        warn(Warning{"", 0, fmt::format("{} triangles still fail the quality bounds (please report this)",
-                                        r.left_other)});
+        warn(Warning{"", 0,
+                     fmt::format("{} triangles still fail the quality bounds (please report this)",
+                                 r.left_other)});
 }
 
 }  // namespace gpdr::api

@@ -42,8 +42,8 @@ bool is_sign(char c) { return c == '-' || c == '+'; }
 constexpr std::string_view known_letters = "prqauAcDjevngBPNEIOXzoYSiFlsCQVh";
 
 // gpdr's long options, for suggesting one when a single dash was typed.
-constexpr std::array<std::string_view, 6> long_options = {
-    "threads", "granularity", "placement", "unsuitable", "help", "version"};
+constexpr std::array<std::string_view, 6> long_options = {"threads",    "granularity", "placement",
+                                                          "unsuitable", "help",        "version"};
 
 // Reads one cluster; `text` has no leading '-', `shown` is the cluster as
 // the user typed it, for messages.
@@ -64,56 +64,117 @@ private:
     // Applies one letter (and the number after it); false to stop reading.
     bool apply(char letter) {
         switch (letter) {
-            case 'p': options_.poly = true; break;
-            case 'r': options_.refine = true; break;
-            case 'q': read_min_angle(); break;
-            case 'a': read_area(); break;
-            case 'u': options_.user_test = true; break;
-            case 'A': options_.region_attributes = true; break;
-            case 'c': options_.convex_hull = true; break;
-            case 'D': options_.conforming_delaunay = true; break;
+            case 'p':
+                options_.poly = true;
+                break;
+            case 'r':
+                options_.refine = true;
+                break;
+            case 'q':
+                read_min_angle();
+                break;
+            case 'a':
+                read_area();
+                break;
+            case 'u':
+                options_.user_test = true;
+                break;
+            case 'A':
+                options_.region_attributes = true;
+                break;
+            case 'c':
+                options_.convex_hull = true;
+                break;
+            case 'D':
+                options_.conforming_delaunay = true;
+                break;
             case 'j':
-                if (digit_follows()) options_.threads = read_count<unsigned>('j');
-                else options_.jettison = true;
+                if (digit_follows())
+                    options_.threads = read_count<unsigned>('j');
+                else
+                    options_.jettison = true;
                 break;
-            case 'e': options_.write_edges = true; break;
-            case 'v': options_.write_voronoi = true; break;
-            case 'n': options_.write_neighbours = true; break;
+            case 'e':
+                options_.write_edges = true;
+                break;
+            case 'v':
+                options_.write_voronoi = true;
+                break;
+            case 'n':
+                options_.write_neighbours = true;
+                break;
             case 'g':
-                if (digit_follows()) options_.granularity = read_count<unsigned>('g');
-                else options_.write_off = true;
+                if (digit_follows())
+                    options_.granularity = read_count<unsigned>('g');
+                else
+                    options_.write_off = true;
                 break;
-            case 'B': options_.no_boundary_markers = true; break;
+            case 'B':
+                options_.no_boundary_markers = true;
+                break;
             case 'P':
-                if (digit_follows()) read_placement();
-                else options_.no_poly_output = true;
+                if (digit_follows())
+                    read_placement();
+                else
+                    options_.no_poly_output = true;
                 break;
-            case 'N': options_.no_node_output = true; break;
-            case 'E': options_.no_ele_output = true; break;
-            case 'I': options_.no_iteration_numbers = true; break;
-            case 'O': options_.ignore_holes = true; break;
-            case 'X': options_.no_exact = true; break;
-            case 'z': options_.zero_based = true; break;
-            case 'o': read_order(); break;
+            case 'N':
+                options_.no_node_output = true;
+                break;
+            case 'E':
+                options_.no_ele_output = true;
+                break;
+            case 'I':
+                options_.no_iteration_numbers = true;
+                break;
+            case 'O':
+                options_.ignore_holes = true;
+                break;
+            case 'X':
+                options_.no_exact = true;
+                break;
+            case 'z':
+                options_.zero_based = true;
+                break;
+            case 'o':
+                read_order();
+                break;
             // Triangle counts every Y but only tells 1 from "more than 1".
-            case 'Y': options_.no_segment_splitting = std::min(options_.no_segment_splitting + 1, 2); break;
+            case 'Y':
+                options_.no_segment_splitting = std::min(options_.no_segment_splitting + 1, 2);
+                break;
             case 'S':
                 options_.steiner_limit = true;
                 options_.max_steiner = digit_follows() ? read_count<std::uint64_t>('S') : 0;
                 break;
-            case 'i': options_.incremental = true; break;
-            case 'F': options_.sweepline = true; break;
-            case 'l': options_.vertical_cuts = true; break;
-            case 's': options_.split_segments = true; break;
-            case 'C': options_.check = true; break;
-            case 'Q': options_.quiet = true; break;
-            case 'V': ++options_.verbosity; break;
+            case 'i':
+                options_.incremental = true;
+                break;
+            case 'F':
+                options_.sweepline = true;
+                break;
+            case 'l':
+                options_.vertical_cuts = true;
+                break;
+            case 's':
+                options_.split_segments = true;
+                break;
+            case 'C':
+                options_.check = true;
+                break;
+            case 'Q':
+                options_.quiet = true;
+                break;
+            case 'V':
+                ++options_.verbosity;
+                break;
             case 'h':
             case 'H':
             case '?':
                 options_.help = true;
                 return false;
-            default: unknown(letter);
+            default:
+                unknown(letter);
         }
         return true;
     }
@@ -151,7 +212,8 @@ private:
         if (ec == std::errc::result_out_of_range)
             fail(fmt::format("-{}{}", letter, number), ": ", "the number is out of range");
         if (ec != std::errc{} || end != digits.data() + digits.size())
-            fail(fmt::format("-{}{}", letter, number), ": ", fmt::format("'{}' is not a number", number));
+            fail(fmt::format("-{}{}", letter, number), ": ",
+                 fmt::format("'{}' is not a number", number));
         return value;
     }
 
@@ -212,7 +274,8 @@ private:
             options_.order = 2;
             return;
         }
-        fail("-o", ": ", "write -o2 for six-node (second-order) triangles; there is no other order");
+        fail("-o", ": ",
+             "write -o2 for six-node (second-order) triangles; there is no other order");
     }
 
     [[noreturn]] void unknown(char letter) const {
@@ -221,20 +284,23 @@ private:
                                                 : static_cast<char>(std::toupper(u));
         std::string advice = "gpdr -h lists the switches";
         if (is_digit(letter)) {
-            advice = "a number must follow its switch with no space (q, a, S, o2, j, g, P take "
-                     "numbers)";
+            advice =
+                "a number must follow its switch with no space (q, a, S, o2, j, g, P take "
+                "numbers)";
         } else if (letter == '-') {
             advice = "write switches together (-pq) or apart (-p -q)";
         } else if (letter == 'w' || letter == 'W') {
             advice = "Triangle's undocumented weighted triangulations are not supported";
         } else if (letter == 'L') {
             advice = "did you mean -l or -D?";
-        } else if (other_case != letter && known_letters.find(other_case) != std::string_view::npos) {
+        } else if (other_case != letter &&
+                   known_letters.find(other_case) != std::string_view::npos) {
             advice = fmt::format("did you mean -{}?", other_case);
         }
-        const std::string what = letter == '-'                 ? std::string("'-'")
-                                 : (u >= 0x20 && u < 0x7f) ? fmt::format("-{}", letter)
-                                                           : fmt::format("byte 0x{:02x}", unsigned{u});
+        const std::string what = letter == '-' ? std::string("'-'")
+                                 : (u >= 0x20 && u < 0x7f)
+                                     ? fmt::format("-{}", letter)
+                                     : fmt::format("byte 0x{:02x}", unsigned{u});
         fail("unknown switch " + what, "; ", advice);
     }
 
@@ -292,8 +358,7 @@ void parse_switches(std::string_view cluster, Options& options) {
 Placement parse_placement(std::string_view name) {
     const std::string n = lower(name);
     if (n == "0" || n == "circumcentre" || n == "circumcenter") return Placement::circumcentre;
-    if (n == "1" || n == "off-centre" || n == "off-center" || n == "offcentre" ||
-        n == "offcenter")
+    if (n == "1" || n == "off-centre" || n == "off-center" || n == "offcentre" || n == "offcenter")
         return Placement::off_centre;
     if (n == "2" || n == "optimisation" || n == "optimization") return Placement::optimisation;
     throw UsageError(fmt::format(
@@ -302,9 +367,12 @@ Placement parse_placement(std::string_view name) {
 
 std::string_view placement_name(Placement placement) {
     switch (placement) {
-        case Placement::circumcentre: return "circumcentre";
-        case Placement::off_centre: return "off-centre";
-        case Placement::optimisation: return "optimisation";
+        case Placement::circumcentre:
+            return "circumcentre";
+        case Placement::off_centre:
+            return "off-centre";
+        case Placement::optimisation:
+            return "optimisation";
     }
     return "unknown";
 }

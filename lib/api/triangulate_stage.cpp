@@ -25,19 +25,21 @@ namespace {
 template <class T, class F>
 std::string list_some(const std::vector<T>& items, F&& describe, std::size_t shown = 8) {
     std::string s;
-    for (std::size_t i = 0; i < items.size() && i < shown; ++i) s += (i ? ", " : "") + describe(items[i]);
+    for (std::size_t i = 0; i < items.size() && i < shown; ++i)
+        s += (i ? ", " : "") + describe(items[i]);
     if (items.size() > shown) s += fmt::format(", and {} more", items.size() - shown);
     return s;
 }
 
-void warn_duplicates(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& duplicates, const std::string& file,
-                     int base, const WarningSink& warn) {
+void warn_duplicates(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& duplicates,
+                     const std::string& file, int base, const WarningSink& warn) {
     if (duplicates.empty()) return;
     warn(Warning{file, 0,
                  fmt::format("{} duplicate vert{} left out of the mesh: {}", duplicates.size(),
                              duplicates.size() == 1 ? "ex" : "ices",
                              list_some(duplicates, [&](const auto& d) {
-                                 return fmt::format("{} (same as {})", d.first + base, d.second + base);
+                                 return fmt::format("{} (same as {})", d.first + base,
+                                                    d.second + base);
                              }))});
 }
 
@@ -45,7 +47,8 @@ void warn_duplicates(const std::vector<std::pair<std::uint32_t, std::uint32_t>>&
 // keeps them from here on, and mesh_to_arrays() takes them back for output.
 std::vector<geometry::Point> take_points(NodeSet& nodes) {
     std::vector<geometry::Point> points(nodes.size());
-    for (std::size_t i = 0; i < points.size(); ++i) points[i] = {nodes.xy[2 * i], nodes.xy[2 * i + 1]};
+    for (std::size_t i = 0; i < points.size(); ++i)
+        points[i] = {nodes.xy[2 * i], nodes.xy[2 * i + 1]};
     nodes.xy = {};
     return points;
 }
@@ -59,11 +62,13 @@ void make_hull_segments(mesh::Mesh& mesh) {
     });
     for (const auto& e : hull) {
         mesh.triangle(e.edge.triangle()).set_subsegment(e.edge.edge(), true);
-        mesh.subsegments().set(e.from, e.to, mesh::SubsegmentInfo{1, mesh::SubsegmentInfo::no_segment});
+        mesh.subsegments().set(e.from, e.to,
+                               mesh::SubsegmentInfo{1, mesh::SubsegmentInfo::no_segment});
     }
 }
 
-void triangulate_points(const Options& options, Input& in, Triangulated& out, const WarningSink& warn) {
+void triangulate_points(const Options& options, Input& in, Triangulated& out,
+                        const WarningSink& warn) {
     triangulate::DelaunayReport report;
     try {
         out.mesh = triangulate::delaunay(take_points(in.nodes.data), report);
@@ -75,7 +80,8 @@ void triangulate_points(const Options& options, Input& in, Triangulated& out, co
     if (options.convex_hull || wants_refinement(options)) make_hull_segments(out.mesh);
 }
 
-void triangulate_pslg(const Options& options, Input& in, Triangulated& out, const WarningSink& warn) {
+void triangulate_pslg(const Options& options, Input& in, Triangulated& out,
+                      const WarningSink& warn) {
     const PolyFile& poly = *in.poly;
     // The vertices were moved from the PolyFile into in.nodes.
     triangulate::Pslg& pslg = out.pslg.emplace(triangulate::pslg_from(poly));
@@ -93,22 +99,24 @@ void triangulate_pslg(const Options& options, Input& in, Triangulated& out, cons
     warn_duplicates(report.duplicate_vertices, in.node_file, base, warn);
     out.duplicates = report.duplicate_vertices.size();
     if (!report.duplicate_segments.empty())
-        warn(Warning{in.poly_file, 0, fmt::format("duplicate segments left out: {}",
-                                                  list_some(report.duplicate_segments, [&](const auto& d) {
-                                                      return fmt::format("{} (same as {})", d.first + base,
-                                                                         d.second + base);
-                                                  }))});
+        warn(Warning{in.poly_file, 0,
+                     fmt::format("duplicate segments left out: {}",
+                                 list_some(report.duplicate_segments, [&](const auto& d) {
+                                     return fmt::format("{} (same as {})", d.first + base,
+                                                        d.second + base);
+                                 }))});
     std::vector<triangulate::NewSegmentVertex> crossings;
     for (const auto& v : report.new_vertices)
         if (v.other_segment != triangulate::NewSegmentVertex::no_segment) crossings.push_back(v);
     if (!crossings.empty())
-        warn(Warning{in.poly_file, 0, fmt::format("segments cross; a vertex was added at each crossing: {}",
-                                                  list_some(crossings, [&](const auto& v) {
-                                                      const auto& p = out.mesh.point(v.vertex);
-                                                      return fmt::format("segments {} and {} at ({}, {})",
-                                                                         v.segment + base, v.other_segment + base,
-                                                                         p.x, p.y);
-                                                  }))});
+        warn(Warning{in.poly_file, 0,
+                     fmt::format("segments cross; a vertex was added at each crossing: {}",
+                                 list_some(crossings, [&](const auto& v) {
+                                     const auto& p = out.mesh.point(v.vertex);
+                                     return fmt::format("segments {} and {} at ({}, {})",
+                                                        v.segment + base, v.other_segment + base,
+                                                        p.x, p.y);
+                                 }))});
     // Attributes of the new vertices: interpolated along their segment.
     for (const auto& v : report.new_vertices) {
         if (v.segment == triangulate::NewSegmentVertex::no_segment) continue;
@@ -125,7 +133,8 @@ void triangulate_pslg(const Options& options, Input& in, Triangulated& out, cons
     if (options.region_attributes) {
         out.triangle_attribute_count = 1;
         out.region_attributes.assign(poly.regions.size() + 1, 0.0);
-        for (std::size_t r = 0; r < poly.regions.size(); ++r) out.region_attributes[r + 1] = poly.regions[r].attribute;
+        for (std::size_t r = 0; r < poly.regions.size(); ++r)
+            out.region_attributes[r + 1] = poly.regions[r].attribute;
     }
 }
 
@@ -156,13 +165,17 @@ void rebuild_mesh(const Options& options, Input& in, Triangulated& out) {
         out.region_attributes.assign(na, 0.0);  // region 0: none
         std::map<std::vector<double>, std::uint16_t> index;
         for (std::size_t t = 0; t < ele.size(); ++t) {
-            std::vector<double> tuple(ele.attributes.begin() + static_cast<std::ptrdiff_t>(t * na),
-                                      ele.attributes.begin() + static_cast<std::ptrdiff_t>((t + 1) * na));
-            auto [it, fresh] = index.try_emplace(tuple, static_cast<std::uint16_t>(index.size() + 1));
+            std::vector<double> tuple(
+                ele.attributes.begin() + static_cast<std::ptrdiff_t>(t * na),
+                ele.attributes.begin() + static_cast<std::ptrdiff_t>((t + 1) * na));
+            auto [it, fresh] =
+                index.try_emplace(tuple, static_cast<std::uint16_t>(index.size() + 1));
             if (fresh) {
                 if (index.size() > 65534)
-                    throw NotImplemented(fmt::format("{}: more than 65534 distinct triangle attribute values", in.ele_file));
-                out.region_attributes.insert(out.region_attributes.end(), tuple.begin(), tuple.end());
+                    throw NotImplemented(fmt::format(
+                        "{}: more than 65534 distinct triangle attribute values", in.ele_file));
+                out.region_attributes.insert(out.region_attributes.end(), tuple.begin(),
+                                             tuple.end());
             }
             out.mesh.triangle(mesh::TriangleId{static_cast<std::uint32_t>(t)}).region = it->second;
         }
@@ -174,11 +187,13 @@ void rebuild_mesh(const Options& options, Input& in, Triangulated& out) {
     }
     if (in.poly) {
         out.segment_ends.reserve(in.poly->segments.endpoints.size());
-        for (const std::uint32_t v : in.poly->segments.endpoints) out.segment_ends.push_back(mesh::VertexId{v});
+        for (const std::uint32_t v : in.poly->segments.endpoints)
+            out.segment_ends.push_back(mesh::VertexId{v});
     }
     // Refinement and -D insert with Bowyer-Watson, which needs a constrained
     // Delaunay mesh; a mesh read back need not be one.
-    if (wants_refinement(options) || options.conforming_delaunay) triangulate::make_constrained_delaunay(out.mesh);
+    if (wants_refinement(options) || options.conforming_delaunay)
+        triangulate::make_constrained_delaunay(out.mesh);
 }
 
 }  // namespace
@@ -211,12 +226,14 @@ Triangulated triangulate_input(const Options& options, Input& in, const WarningS
             out.new_vertices.push_back(n);
         }
         if (report.encroached_left)
-            warn(Warning{"", 0, fmt::format("{} subsegments are still encroached ({}), so the mesh is not "
-                                            "conforming Delaunay everywhere",
-                                            report.encroached_left,
-                                            report.stopped == triangulate::ConformingReport::Stop::steiner_limit
-                                                ? "the -S limit was reached"
-                                                : "-Y/-YY forbids splitting them, or they are too short")});
+            warn(Warning{
+                "", 0,
+                fmt::format("{} subsegments are still encroached ({}), so the mesh is not "
+                            "conforming Delaunay everywhere",
+                            report.encroached_left,
+                            report.stopped == triangulate::ConformingReport::Stop::steiner_limit
+                                ? "the -S limit was reached"
+                                : "-Y/-YY forbids splitting them, or they are too short")});
     }
     return out;
 }

@@ -64,7 +64,8 @@ void write_all(const std::vector<FileJob>& jobs, unsigned threads) {
     {
         // This thread and up to threads - 1 helpers, no more than there are files.
         std::vector<std::jthread> helpers;
-        for (std::size_t h = 1; h < std::min<std::size_t>(threads, n); ++h) helpers.emplace_back(work);
+        for (std::size_t h = 1; h < std::min<std::size_t>(threads, n); ++h)
+            helpers.emplace_back(work);
         work();
     }
     for (const std::exception_ptr& f : failures)
@@ -94,7 +95,8 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
     };
 
     // Computed before -o2 changes the triangles to six nodes.
-    const bool want_poly = (o.poly || request.write_hull_poly) && !o.no_poly_output && !names.out_poly.empty();
+    const bool want_poly =
+        (o.poly || request.write_hull_poly) && !o.no_poly_output && !names.out_poly.empty();
     EdgeSet edges;
     if (o.write_edges) edges = edges_of(arrays, marker);
     VoronoiDiagram voronoi;
@@ -105,14 +107,18 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
     // Each job keeps what it needs by value or refers to data that stays
     // put until write_all returns; all of it is only read.
     std::vector<FileJob> jobs;
-    const auto add = [&](const std::string& target, std::function<void(io::OutputTransaction&)> write) {
+    const auto add = [&](const std::string& target,
+                         std::function<void(io::OutputTransaction&)> write) {
         jobs.push_back({target, std::move(write)});
     };
     if (!o.no_node_output)
-        add(names.out_node, [&](io::OutputTransaction& out) { io::write_node(out, names.out_node, arrays.nodes, format); });
+        add(names.out_node, [&](io::OutputTransaction& out) {
+            io::write_node(out, names.out_node, arrays.nodes, format);
+        });
     if (!o.no_ele_output)
-        add(names.out_ele,
-            [&](io::OutputTransaction& out) { io::write_ele(out, names.out_ele, triangle_source(arrays), format); });
+        add(names.out_ele, [&](io::OutputTransaction& out) {
+            io::write_ele(out, names.out_ele, triangle_source(arrays), format);
+        });
     if (want_poly) {
         add(names.out_poly, [&](io::OutputTransaction& out) {
             PolyFile poly;
@@ -129,7 +135,9 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
         });
     }
     if (o.write_edges)
-        add(names.out_edge, [&](io::OutputTransaction& out) { io::write_edge(out, names.out_edge, edges, format); });
+        add(names.out_edge, [&](io::OutputTransaction& out) {
+            io::write_edge(out, names.out_edge, edges, format);
+        });
     if (o.write_voronoi) {
         io::WriteFormat plain = format;
         plain.markers = false;
@@ -141,8 +149,9 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
         });
     }
     if (o.write_neighbours)
-        add(names.out_neigh,
-            [&](io::OutputTransaction& out) { io::write_neigh(out, names.out_neigh, arrays.neighbours, format); });
+        add(names.out_neigh, [&](io::OutputTransaction& out) {
+            io::write_neigh(out, names.out_neigh, arrays.neighbours, format);
+        });
     if (o.write_off)
         add(names.out_off, [&](io::OutputTransaction& out) {
             io::write_off(out, names.out_off, arrays.nodes, arrays.triangles, edge_count, format);

@@ -113,7 +113,8 @@ Disk selection_disk(const Point& a, const Point& b, const Point& c);
 // `fraction` < 1 moves c' towards pq by that factor of its distance from the
 // midpoint of pq (Triangle stays 5% short of the exact point, so the new
 // triangle is not left borderline-poor by rounding).
-Point off_centre(const Point& a, const Point& b, const Point& c, double rho_bar, double fraction = 1.0);
+Point off_centre(const Point& a, const Point& b, const Point& c, double rho_bar,
+                 double fraction = 1.0);
 
 // a + t (b - a), computed from the nearer end so that t = 0 and t = 1 give a
 // and b exactly.

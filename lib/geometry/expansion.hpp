@@ -210,8 +210,8 @@ inline Estimate estimate(int n, const double* e) {
     if (n == 0) return {0.0, 0.0};
     double value = e[0];
     for (int i = 1; i < n; ++i) value += e[i];
-    const double bound = (static_cast<double>(n) * std::abs(e[n - 1]) + std::abs(value)) *
-                         (1.02 * kUnitRoundoff);
+    const double bound =
+        (static_cast<double>(n) * std::abs(e[n - 1]) + std::abs(value)) * (1.02 * kUnitRoundoff);
     return {value, bound};
 }
 
@@ -227,8 +227,6 @@ inline double approximate(int n, const double* e) {
 // x * (1 + 8u), rounded: at least x_exact whenever x was computed from
 // nonnegative exact quantities by at most 6 roundings, since
 // (1 - u)^7 (1 + 8u) >= (1 - 7u)(1 + 8u) = 1 + u - 56u^2 > 1.
-inline double widen(double x) {
-    return x * (1.0 + 8.0 * kUnitRoundoff);
-}
+inline double widen(double x) { return x * (1.0 + 8.0 * kUnitRoundoff); }
 
 }  // namespace gpdr::geometry::exact

@@ -258,8 +258,8 @@ double incircle(const Point& a, const Point& b, const Point& c, const Point& d) 
     const double bdxady = bdx * ady;
     const double clift = cdx * cdx + cdy * cdy;
 
-    const double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) +
-                       clift * (adxbdy - bdxady);
+    const double det =
+        alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
     const double permanent = (std::abs(bdxcdy) + std::abs(cdxbdy)) * alift +
                              (std::abs(cdxady) + std::abs(adxcdy)) * blift +
                              (std::abs(adxbdy) + std::abs(bdxady)) * clift;

@@ -115,8 +115,8 @@ ReadResult<EdgeSet> read_edge(const std::string& path, int base, std::size_t ver
     return r;
 }
 
-ReadResult<NeighbourSet> read_neigh(const std::string& path, int base,
-                                    std::size_t triangle_count, const WarningSink& warn) {
+ReadResult<NeighbourSet> read_neigh(const std::string& path, int base, std::size_t triangle_count,
+                                    const WarningSink& warn) {
     TextReader in(path);
     header_line(in, "<#triangles> 3");
     const std::size_t count = in.count("triangle count");
@@ -134,17 +134,16 @@ ReadResult<NeighbourSet> read_neigh(const std::string& path, int base,
         for (int j = 0; j < 3; ++j) {
             // -1 (no neighbour) is the only value outside the numbering.
             const std::int64_t n = in.integer("neighbour");
-            r.data.neighbours.push_back(
-                n == -1 ? NeighbourSet::none
-                        : detail::checked_index(in, n, base, triangle_count, "neighbour", "triangles"));
+            r.data.neighbours.push_back(n == -1 ? NeighbourSet::none
+                                                : detail::checked_index(in, n, base, triangle_count,
+                                                                        "neighbour", "triangles"));
         }
     }
     return r;
 }
 
 ReadResult<VoronoiEdgeSet> read_voronoi_edge(const std::string& path, int base,
-                                             std::size_t vertex_count,
-                                             const WarningSink& warn) {
+                                             std::size_t vertex_count, const WarningSink& warn) {
     TextReader in(path);
     header_line(in, "<#edges> <#markers>");
     const std::size_t count = in.count("edge count");

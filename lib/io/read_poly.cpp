@@ -38,7 +38,8 @@ NodeHeader read_node_header(TextReader& in) {
     h.count = in.count("vertex count");
     detail::check_index_capacity(in, h.count, "vertices");
     const std::int64_t dim = in.integer_or(2, "dimension");
-    if (dim != 2) in.fail(fmt::format("dimension {} is not supported: gpdr meshes in 2 dimensions", dim));
+    if (dim != 2)
+        in.fail(fmt::format("dimension {} is not supported: gpdr meshes in 2 dimensions", dim));
     h.attributes = detail::attribute_count(in, h.count, "vertex attribute count");
     h.markers = detail::marker_count(in, "vertex marker count");
     return h;
@@ -92,7 +93,8 @@ ReadResult<NodeSet> read_node_impl(const std::string& path, std::string_view why
 
 std::string node_file_for(const std::string& poly_path) {
     constexpr std::string_view ext = ".poly";
-    if (poly_path.size() > ext.size() && poly_path.compare(poly_path.size() - ext.size(), ext.size(), ext) == 0)
+    if (poly_path.size() > ext.size() &&
+        poly_path.compare(poly_path.size() - ext.size(), ext.size(), ext) == 0)
         return poly_path.substr(0, poly_path.size() - ext.size()) + ".node";
     return poly_path + ".node";
 }
@@ -135,7 +137,8 @@ ReadResult<PolyFile> read_poly(const std::string& path, const WarningSink& warn,
     if (segment_markers) poly.segments.markers.reserve(expect);
     IdChecker segment_ids("segment", r.base);
     for (std::size_t k = 0; k < segment_count; ++k) {
-        if (!in.next_line()) in.fail(fmt::format("expected {} segments, found {}", segment_count, k));
+        if (!in.next_line())
+            in.fail(fmt::format("expected {} segments, found {}", segment_count, k));
         segment_ids.check(in, in.integer("segment number"), k, warn);
         const auto a = detail::vertex_index(in, r.base, vertex_count, "segment endpoint");
         const auto b = detail::vertex_index(in, r.base, vertex_count, "segment endpoint");
@@ -165,7 +168,8 @@ ReadResult<PolyFile> read_poly(const std::string& path, const WarningSink& warn,
         poly.regions.reserve(region_count);
         IdChecker region_ids("region", r.base);
         for (std::size_t k = 0; k < region_count; ++k) {
-            if (!in.next_line()) in.fail(fmt::format("expected {} regions, found {}", region_count, k));
+            if (!in.next_line())
+                in.fail(fmt::format("expected {} regions, found {}", region_count, k));
             region_ids.check(in, in.integer("region number"), k, warn);
             Region reg;
             reg.x = in.real("region x coordinate");
@@ -175,8 +179,7 @@ ReadResult<PolyFile> read_poly(const std::string& path, const WarningSink& warn,
             reg.max_area = in.real_or(reg.attribute, "region maximum area");
             poly.regions.push_back(reg);
         }
-        if (in.next_line())
-            in.warn(warn, "data after the region list is ignored");
+        if (in.next_line()) in.warn(warn, "data after the region list is ignored");
     }
     return r;
 }

@@ -149,7 +149,8 @@ double TextReader::real(std::string_view what) {
     // Fast path: from_chars stops at the blank ending the token.
     const auto [ptr, ec] = std::from_chars(pos_, data_end_, value, std::chars_format::general);
     if (ec == std::errc{} && (ptr == data_end_ || is_blank(*ptr))) {
-        if (!std::isfinite(value)) fail(std::string(what) + " " + quoted(token()) + " is not finite");
+        if (!std::isfinite(value))
+            fail(std::string(what) + " " + quoted(token()) + " is not finite");
         pos_ = ptr;
         return value;
     }
@@ -174,8 +175,9 @@ std::int64_t TextReader::integer(std::string_view what) {
     const std::string_view tok = token();
     double real_value = 0;
     constexpr double limit = 4611686018427387904.0;  // 2^62: far beyond any index or count
-    if (!parse_real(tok.data(), tok.data() + tok.size(), real_value) || !std::isfinite(real_value) ||
-        real_value != std::floor(real_value) || std::fabs(real_value) > limit)
+    if (!parse_real(tok.data(), tok.data() + tok.size(), real_value) ||
+        !std::isfinite(real_value) || real_value != std::floor(real_value) ||
+        std::fabs(real_value) > limit)
         fail(std::string(what) + " " + quoted(tok) + " is not an integer");
     pos_ = tok.data() + tok.size();
     return static_cast<std::int64_t>(real_value);
@@ -202,7 +204,8 @@ std::size_t TextReader::count(std::string_view what, std::size_t min_bytes_per_e
     constexpr std::uint64_t small = 65536;
     if (static_cast<std::uint64_t>(n) > capacity && static_cast<std::uint64_t>(n) > small)
         fail(std::string(what) + " " + std::to_string(n) + " is impossible: the remaining " +
-             std::to_string(remaining_bytes()) + " bytes of the file cannot hold that many entries");
+             std::to_string(remaining_bytes()) +
+             " bytes of the file cannot hold that many entries");
     return static_cast<std::size_t>(n);
 }
 
@@ -223,7 +226,8 @@ void IdChecker::check(TextReader& in, std::int64_t id, std::size_t k, const Warn
     in.warn(warn, std::string(kind_) + " number " + std::to_string(id) + " where " +
                       std::to_string(expected) +
                       " was expected; ids are not consecutive (gpdr, like Triangle, numbers " +
-                      std::string(kind_) + "s by their order in the file; further jumps in this "
+                      std::string(kind_) +
+                      "s by their order in the file; further jumps in this "
                       "file are not reported)");
 }
 

@@ -43,8 +43,8 @@ void put_vertices(OutputTransaction::File& file, const NodeSet& nodes, const Wri
     Out out(buf);
     fmt::format_to(out, FMT_COMPILE("{}  2  {}  {}\n"), n, na, markers ? 1 : 0);
     for (std::size_t v = 0; v < n; ++v) {
-        fmt::format_to(out, FMT_COMPILE("{:4}    {}  {}"), numbered(v, format.base), nodes.xy[2 * v],
-                       nodes.xy[2 * v + 1]);
+        fmt::format_to(out, FMT_COMPILE("{:4}    {}  {}"), numbered(v, format.base),
+                       nodes.xy[2 * v], nodes.xy[2 * v + 1]);
         for (std::uint32_t a = 0; a < na; ++a)
             fmt::format_to(out, FMT_COMPILE("  {}"), nodes.attributes[v * na + a]);
         if (markers) fmt::format_to(out, FMT_COMPILE("    {}"), nodes.markers[v]);
@@ -103,14 +103,14 @@ void write_poly(OutputTransaction& tx, const std::string& path, const PolyFile& 
     const std::size_t holes = poly.holes.size() / 2;
     fmt::format_to(out, FMT_COMPILE("{}\n"), holes);
     for (std::size_t h = 0; h < holes; ++h)
-        fmt::format_to(out, FMT_COMPILE("{:4}   {}  {}\n"), numbered(h, format.base), poly.holes[2 * h],
-                       poly.holes[2 * h + 1]);
+        fmt::format_to(out, FMT_COMPILE("{:4}   {}  {}\n"), numbered(h, format.base),
+                       poly.holes[2 * h], poly.holes[2 * h + 1]);
     if (!poly.regions.empty()) {
         fmt::format_to(out, FMT_COMPILE("{}\n"), poly.regions.size());
         for (std::size_t r = 0; r < poly.regions.size(); ++r) {
             const Region& reg = poly.regions[r];
-            fmt::format_to(out, FMT_COMPILE("{:4}   {}  {}  {}  {}\n"), numbered(r, format.base), reg.x,
-                           reg.y, reg.attribute, reg.max_area);
+            fmt::format_to(out, FMT_COMPILE("{:4}   {}  {}  {}  {}\n"), numbered(r, format.base),
+                           reg.x, reg.y, reg.attribute, reg.max_area);
         }
     }
     file.finish(format.command);
@@ -207,8 +207,8 @@ void write_neigh(OutputTransaction& tx, const std::string& path, const Neighbour
     fmt::format_to(out, FMT_COMPILE("{}  3\n"), neighbours.size());
     for (std::size_t t = 0; t < neighbours.size(); ++t) {
         const std::uint32_t* n = &neighbours.neighbours[3 * t];
-        fmt::format_to(out, FMT_COMPILE("{:4}    {}  {}  {}\n"), numbered(t, format.base), written(n[0]),
-                       written(n[1]), written(n[2]));
+        fmt::format_to(out, FMT_COMPILE("{:4}    {}  {}  {}\n"), numbered(t, format.base),
+                       written(n[0]), written(n[1]), written(n[2]));
         file.flush_if_full();
     }
     file.finish(format.command);
@@ -239,8 +239,9 @@ void write_off(OutputTransaction& tx, const std::string& path, const NodeSet& no
 
 void write_voronoi_edge(OutputTransaction& tx, const std::string& path, const VoronoiEdgeSet& edges,
                         const WriteFormat& format) {
-    check_sizes(edges.endpoints.size() % 2 == 0 && edges.directions.size() == edges.endpoints.size(),
-                path, "Voronoi edges");
+    check_sizes(
+        edges.endpoints.size() % 2 == 0 && edges.directions.size() == edges.endpoints.size(), path,
+        "Voronoi edges");
     auto& file = tx.begin_file(path);
     auto& buf = file.buffer();
     Out out(buf);

@@ -34,7 +34,8 @@ private:
 };
 
 std::string describe(TriangleId id, const Triangle& t) {
-    return fmt::format("triangle {} ({}, {}, {})", index(id), index(t.v[0]), index(t.v[1]), index(t.v[2]));
+    return fmt::format("triangle {} ({}, {}, {})", index(id), index(t.v[0]), index(t.v[1]),
+                       index(t.v[2]));
 }
 
 }  // namespace
@@ -56,7 +57,8 @@ std::vector<std::string> check_mesh(const Mesh& mesh, const CheckOptions& option
             if (index(v) >= vertex_end) {
                 report.add("{}: corner {} is not a stored vertex", describe(id, t), k);
                 corners_ok = false;
-            } else if (mesh.kind(v) == VertexKind::unused || mesh.kind(v) == VertexKind::duplicate) {
+            } else if (mesh.kind(v) == VertexKind::unused ||
+                       mesh.kind(v) == VertexKind::duplicate) {
                 report.add("{}: corner {} is vertex {}, which is {}", describe(id, t), k, index(v),
                            mesh.kind(v) == VertexKind::unused ? "unused" : "a duplicate left out");
             }
@@ -74,9 +76,11 @@ std::vector<std::string> check_mesh(const Mesh& mesh, const CheckOptions& option
             const VertexId from = t.v[next3(k)], to = t.v[prev3(k)];
             if (across.is_none()) {
                 if (t.is_subsegment(k)) ++flagged_edges;
-                if (t.is_subsegment(k) && options.subsegment_table && !mesh.subsegments().find(from, to))
-                    report.add("{}: edge {}-{} is flagged as subsegment but missing from the side table",
-                               describe(id, t), index(from), index(to));
+                if (t.is_subsegment(k) && options.subsegment_table &&
+                    !mesh.subsegments().find(from, to))
+                    report.add(
+                        "{}: edge {}-{} is flagged as subsegment but missing from the side table",
+                        describe(id, t), index(from), index(to));
                 continue;
             }
             const TriangleId uid = across.triangle();
@@ -88,38 +92,44 @@ std::vector<std::string> check_mesh(const Mesh& mesh, const CheckOptions& option
             const Triangle& u = mesh.triangle(uid);
             const int j = across.edge();
             if (j > 2) {
-                report.add("{}: neighbour reference names edge {} of triangle {}", describe(id, t), j, index(uid));
+                report.add("{}: neighbour reference names edge {} of triangle {}", describe(id, t),
+                           j, index(uid));
                 continue;
             }
             if (u.n[j] != EdgeRef(id, k))
                 report.add("{}: neighbour {} across edge {}-{} does not link back", describe(id, t),
                            describe(uid, u), index(from), index(to));
             if (u.v[next3(j)] != to || u.v[prev3(j)] != from)
-                report.add("{}: edge {}-{} is edge {}-{} in neighbour {}", describe(id, t), index(from),
-                           index(to), index(u.v[next3(j)]), index(u.v[prev3(j)]), describe(uid, u));
+                report.add("{}: edge {}-{} is edge {}-{} in neighbour {}", describe(id, t),
+                           index(from), index(to), index(u.v[next3(j)]), index(u.v[prev3(j)]),
+                           describe(uid, u));
             if (t.is_subsegment(k) != u.is_subsegment(j))
-                report.add("{}: edge {}-{} is a subsegment on one side only (neighbour {})", describe(id, t),
-                           index(from), index(to), describe(uid, u));
+                report.add("{}: edge {}-{} is a subsegment on one side only (neighbour {})",
+                           describe(id, t), index(from), index(to), describe(uid, u));
             // Edge-wise checks once per edge, from the lower id.
             if (index(id) > index(uid)) continue;
             if (t.is_subsegment(k)) {
                 ++flagged_edges;
                 if (options.subsegment_table && !mesh.subsegments().find(from, to))
-                    report.add("{}: edge {}-{} is flagged as subsegment but missing from the side table",
-                               describe(id, t), index(from), index(to));
+                    report.add(
+                        "{}: edge {}-{} is flagged as subsegment but missing from the side table",
+                        describe(id, t), index(from), index(to));
             } else if (options.delaunay && corners_ok && index(u.v[j]) < vertex_end) {
                 const Point& a = mesh.point(t.v[0]);
                 const Point& b = mesh.point(t.v[1]);
                 const Point& c = mesh.point(t.v[2]);
-                if (geometry::orient2d(a, b, c) > 0 && geometry::incircle(a, b, c, mesh.point(u.v[j])) > 0)
-                    report.add("{}: edge {}-{} is not locally Delaunay: vertex {} of {} is inside the circumcircle",
-                               describe(id, t), index(from), index(to), index(u.v[j]), describe(uid, u));
+                if (geometry::orient2d(a, b, c) > 0 &&
+                    geometry::incircle(a, b, c, mesh.point(u.v[j])) > 0)
+                    report.add(
+                        "{}: edge {}-{} is not locally Delaunay: vertex {} of {} is inside the "
+                        "circumcircle",
+                        describe(id, t), index(from), index(to), index(u.v[j]), describe(uid, u));
             }
         }
     }
     if (options.subsegment_table && flagged_edges != mesh.subsegments().size())
-        report.add("the side table holds {} subsegments but {} edges are flagged", mesh.subsegments().size(),
-                   flagged_edges);
+        report.add("the side table holds {} subsegments but {} edges are flagged",
+                   mesh.subsegments().size(), flagged_edges);
     return report.finish();
 }
 

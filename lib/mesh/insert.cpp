@@ -23,24 +23,27 @@ bool strictly_between(const Point& a, const Point& b, const Point& p) {
 std::optional<InsertResult> refusal(const Mesh& mesh, const LocateResult& where) {
     const Triangle& t = mesh.triangle(where.triangle);
     switch (where.where) {
-    case Location::on_vertex:
-        return InsertResult{InsertStatus::duplicate, t.v[where.index], EdgeRef::none()};
-    case Location::on_edge:
-        if (t.is_subsegment(where.index))
-            return InsertResult{InsertStatus::on_subsegment, no_vertex, EdgeRef(where.triangle, where.index)};
-        return std::nullopt;
-    case Location::outside:
-        if (!t.is_ghost())
-            return InsertResult{InsertStatus::outside, no_vertex, EdgeRef(where.triangle, where.index)};
-        return std::nullopt;
-    case Location::inside:
-        return std::nullopt;
+        case Location::on_vertex:
+            return InsertResult{InsertStatus::duplicate, t.v[where.index], EdgeRef::none()};
+        case Location::on_edge:
+            if (t.is_subsegment(where.index))
+                return InsertResult{InsertStatus::on_subsegment, no_vertex,
+                                    EdgeRef(where.triangle, where.index)};
+            return std::nullopt;
+        case Location::outside:
+            if (!t.is_ghost())
+                return InsertResult{InsertStatus::outside, no_vertex,
+                                    EdgeRef(where.triangle, where.index)};
+            return std::nullopt;
+        case Location::inside:
+            return std::nullopt;
     }
     return std::nullopt;
 }
 
 void clear_marks(Mesh& mesh, const std::vector<TriangleId>& cavity) {
-    for (TriangleId t : cavity) mesh.triangle(t).flags &= static_cast<std::uint8_t>(~Triangle::mark_bit);
+    for (TriangleId t : cavity)
+        mesh.triangle(t).flags &= static_cast<std::uint8_t>(~Triangle::mark_bit);
 }
 
 }  // namespace
@@ -128,7 +131,8 @@ InsertResult commit_cavity(Pool& pool, VertexId v, const LocateResult& where, In
     do {
         const Triangle& t = mesh.triangle(e.triangle());
         if (e == skip) skip_at = boundary.size();
-        boundary.push_back({t.v[next3(e.edge())], t.v[prev3(e.edge())], t.n[e.edge()], t.is_subsegment(e.edge())});
+        boundary.push_back(
+            {t.v[next3(e.edge())], t.v[prev3(e.edge())], t.n[e.edge()], t.is_subsegment(e.edge())});
         TriangleId ct = e.triangle();
         int j = next3(e.edge());
         while (!is_boundary(mesh.triangle(ct), j)) {
@@ -145,7 +149,9 @@ InsertResult commit_cavity(Pool& pool, VertexId v, const LocateResult& where, In
         clear_marks(mesh, cavity);
         boundary.clear();
         cavity.clear();
-        throw Error("mesh: Bowyer-Watson cavity is not simply connected (the mesh is not Delaunay near the point)");
+        throw Error(
+            "mesh: Bowyer-Watson cavity is not simply connected (the mesh is not Delaunay near the "
+            "point)");
     }
 
     // Step 4b: kill the cavity, then fan the boundary from v.  Slots freed
@@ -186,14 +192,16 @@ InsertResult bowyer_watson(Pool& pool, VertexId v, const LocateResult& where, In
 bool in_circumcircle(const Mesh& mesh, const Triangle& t, const Point& p) {
     const int g = t.corner_of(ghost_vertex);
     if (g < 0)
-        return geometry::incircle(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]), p) > 0;
+        return geometry::incircle(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]), p) >
+               0;
     const Point& a = mesh.point(t.v[next3(g)]);
     const Point& b = mesh.point(t.v[prev3(g)]);
     const double o = geometry::orient2d(a, b, p);
     return o > 0 || (o == 0 && strictly_between(a, b, p));
 }
 
-InsertResult insert_located(Pool& pool, VertexId v, const LocateResult& where, InsertBuffer& buffer) {
+InsertResult insert_located(Pool& pool, VertexId v, const LocateResult& where,
+                            InsertBuffer& buffer) {
     if (auto r = refusal(pool.mesh(), where)) return *r;
     return bowyer_watson(pool, v, where, buffer);
 }
@@ -203,7 +211,8 @@ InsertResult insert_vertex(Pool& pool, VertexId v, TriangleId hint, InsertBuffer
     return insert_located(pool, v, where, buffer);
 }
 
-InsertResult insert_point(Pool& pool, const Point& p, VertexKind kind, TriangleId hint, InsertBuffer& buffer) {
+InsertResult insert_point(Pool& pool, const Point& p, VertexKind kind, TriangleId hint,
+                          InsertBuffer& buffer) {
     const LocateResult where = locate(pool.mesh(), p, hint, buffer.random_state);
     if (auto r = refusal(pool.mesh(), where)) return *r;
     const VertexId v = pool.new_vertex(p, kind);

@@ -93,7 +93,8 @@ InsertResult insert_point(Pool& pool, const Point& p, VertexKind kind, TriangleI
 
 // Steps 2–4 with the location already known (`where` from locate(p)).
 // Vertex v must lie at p.
-InsertResult insert_located(Pool& pool, VertexId v, const LocateResult& where, InsertBuffer& buffer);
+InsertResult insert_located(Pool& pool, VertexId v, const LocateResult& where,
+                            InsertBuffer& buffer);
 
 // Steps 3 and 4 apart, for a caller that must look at the cavity before it
 // decides (refinement rejects a Steiner point that encroaches a subsegment

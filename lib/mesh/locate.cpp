@@ -6,7 +6,8 @@
 
 namespace gpdr::mesh {
 
-LocateResult locate(const Mesh& mesh, const Point& p, TriangleId hint, std::uint32_t& random_state) {
+LocateResult locate(const Mesh& mesh, const Point& p, TriangleId hint,
+                    std::uint32_t& random_state) {
     TriangleId t = hint;
     if (const Triangle& h = mesh.triangle(t); h.is_ghost()) {
         // Start on the real triangle beside the ghost (p may be on either

@@ -43,7 +43,8 @@ class Mesh {
 public:
     static constexpr unsigned triangle_chunk_bits = 16;  // 2 MiB per chunk
     static constexpr unsigned vertex_chunk_bits = 16;    // 1 MiB of points per chunk
-    using TriangleTable = ChunkTable<Triangle, triangle_chunk_bits, (max_triangles >> triangle_chunk_bits)>;
+    using TriangleTable =
+        ChunkTable<Triangle, triangle_chunk_bits, (max_triangles >> triangle_chunk_bits)>;
     using PointTable = ChunkTable<Point, vertex_chunk_bits, (1u << (32 - vertex_chunk_bits))>;
     using KindTable = ChunkTable<VertexKind, vertex_chunk_bits, (1u << (32 - vertex_chunk_bits))>;
 

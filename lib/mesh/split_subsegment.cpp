@@ -35,7 +35,8 @@ bool placeable(const Mesh& mesh, EdgeRef s, EdgeRef across, const Point& p) {
 Point midpoint(const Point& a, const Point& b) { return {0.5 * (a.x + b.x), 0.5 * (a.y + b.y)}; }
 
 void clear_marks(Mesh& mesh, const std::vector<TriangleId>& cavity) {
-    for (TriangleId t : cavity) mesh.triangle(t).flags &= static_cast<std::uint8_t>(~Triangle::mark_bit);
+    for (TriangleId t : cavity)
+        mesh.triangle(t).flags &= static_cast<std::uint8_t>(~Triangle::mark_bit);
 }
 
 enum class Attempt { done, retry, broken };
@@ -63,7 +64,8 @@ void lawson_flips(Mesh& mesh, InsertBuffer& buf) {
         const Triangle& u = mesh.triangle(across.triangle());
         if (u.is_ghost() || t.is_ghost()) continue;
         const Point& q = mesh.point(u.v[across.edge()]);
-        if (geometry::incircle(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]), q) <= 0) continue;
+        if (geometry::incircle(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]), q) <= 0)
+            continue;
         if (!flippable(mesh, e)) continue;
         const TriangleId other = across.triangle();
         save_if_tagged(mesh.triangle(e.triangle()), buf);
@@ -147,9 +149,12 @@ Attempt grow_cavity(Mesh& mesh, EdgeRef s, EdgeRef across, const Point& p, Inser
     return boundary.size() == boundary_edges ? Attempt::done : Attempt::broken;
 }
 
-bool can_split_at(const Mesh& mesh, EdgeRef s, const Point& p) { return placeable(mesh, s, mesh.neighbour(s), p); }
+bool can_split_at(const Mesh& mesh, EdgeRef s, const Point& p) {
+    return placeable(mesh, s, mesh.neighbour(s), p);
+}
 
-InsertResult split_subsegment(Pool& pool, EdgeRef s, const Point& asked, VertexKind kind, InsertBuffer& buf) {
+InsertResult split_subsegment(Pool& pool, EdgeRef s, const Point& asked, VertexKind kind,
+                              InsertBuffer& buf) {
     Mesh& mesh = pool.mesh();
     const VertexId x = mesh.origin(s), y = mesh.destination(s);
     const EdgeRef across = mesh.neighbour(s);
@@ -163,8 +168,9 @@ InsertResult split_subsegment(Pool& pool, EdgeRef s, const Point& asked, VertexK
                 p = middle;
                 break;
             }
-            throw Error("mesh: cannot place a vertex inside subsegment " + std::to_string(index(x)) + "-" +
-                        std::to_string(index(y)) + " (degenerate triangles around it)");
+            throw Error("mesh: cannot place a vertex inside subsegment " +
+                        std::to_string(index(x)) + "-" + std::to_string(index(y)) +
+                        " (degenerate triangles around it)");
         }
         p = midpoint(p, middle);
     }
@@ -172,7 +178,8 @@ InsertResult split_subsegment(Pool& pool, EdgeRef s, const Point& asked, VertexK
     // The split edge is crossed by the cavity: unflag it for the search.
     Triangle& t1 = mesh.triangle(s.triangle());
     const std::uint16_t region1 = t1.region;
-    const std::uint16_t region2 = across.is_none() ? region1 : mesh.triangle(across.triangle()).region;
+    const std::uint16_t region2 =
+        across.is_none() ? region1 : mesh.triangle(across.triangle()).region;
     t1.set_subsegment(s.edge(), false);
     if (!across.is_none()) mesh.triangle(across.triangle()).set_subsegment(across.edge(), false);
     auto restore = [&] {
@@ -192,8 +199,9 @@ InsertResult split_subsegment(Pool& pool, EdgeRef s, const Point& asked, VertexK
         if (a == Attempt::done) break;
         if (a == Attempt::broken || banned.size() > 64) {
             restore();
-            throw Error("mesh: the cavity of a subsegment split is not a disk (the mesh is broken near " +
-                        std::to_string(index(x)) + "-" + std::to_string(index(y)) + ")");
+            throw Error(
+                "mesh: the cavity of a subsegment split is not a disk (the mesh is broken near " +
+                std::to_string(index(x)) + "-" + std::to_string(index(y)) + ")");
         }
         clear_marks(mesh, buf.killed);
     }

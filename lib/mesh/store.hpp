@@ -73,7 +73,8 @@ public:
             // drops a memset of calloc'd memory, and turns malloc + memset
             // into calloc).
             volatile char* bytes = reinterpret_cast<volatile char*>(fresh);
-            for (std::size_t at = 0; at < std::size_t{chunk_size} * sizeof(T); at += 4096) bytes[at] = 0;
+            for (std::size_t at = 0; at < std::size_t{chunk_size} * sizeof(T); at += 4096)
+                bytes[at] = 0;
         }
         T* expected = nullptr;
         if (chunks_[c].compare_exchange_strong(expected, fresh, std::memory_order_acq_rel))

@@ -13,8 +13,8 @@
 // changed by the worker whose buffer zone holds the subsegment.  size(),
 // clear(), reserve() and for_each() are for single-threaded use.
 
-#include <cstddef>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -28,8 +28,8 @@ namespace gpdr::mesh {
 struct SubsegmentInfo {
     static constexpr std::uint32_t no_segment = 0xFFFFFFFFu;
 
-    int marker = 0;                        // boundary marker (Triangle's rules, TRIANGLE-COMPAT.md)
-    std::uint32_t segment = no_segment;    // index of the input segment it lies on
+    int marker = 0;                      // boundary marker (Triangle's rules, TRIANGLE-COMPAT.md)
+    std::uint32_t segment = no_segment;  // index of the input segment it lies on
 
     friend bool operator==(const SubsegmentInfo&, const SubsegmentInfo&) = default;
 };
@@ -85,7 +85,8 @@ public:
         if (!shards_) return;
         for (std::size_t i = 0; i < shard_count; ++i)
             for (const auto& [k, info] : shards_[i].map)
-                f(VertexId{static_cast<std::uint32_t>(k >> 32)}, VertexId{static_cast<std::uint32_t>(k)}, info);
+                f(VertexId{static_cast<std::uint32_t>(k >> 32)},
+                  VertexId{static_cast<std::uint32_t>(k)}, info);
     }
 
 private:

@@ -41,7 +41,8 @@ void for_each_edge(const Mesh& mesh, F&& f) {
         for (int k = 0; k < 3; ++k) {
             const EdgeRef across = t.n[k];
             if (!across.is_none() && index(across.triangle()) < index(id)) continue;
-            f(EdgeView{EdgeRef(id, k), t.v[next3(k)], t.v[prev3(k)], across.is_none(), t.is_subsegment(k)});
+            f(EdgeView{EdgeRef(id, k), t.v[next3(k)], t.v[prev3(k)], across.is_none(),
+                       t.is_subsegment(k)});
         }
     });
 }

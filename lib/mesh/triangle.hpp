@@ -57,7 +57,8 @@ struct Triangle {
     // generation still equals the entry's; nothing else of a slot that may
     // be someone else's is read before that check.
     std::uint32_t load_generation() const {
-        return std::atomic_ref<std::uint32_t>(const_cast<std::uint32_t&>(generation)).load(std::memory_order_relaxed);
+        return std::atomic_ref<std::uint32_t>(const_cast<std::uint32_t&>(generation))
+            .load(std::memory_order_relaxed);
     }
     void bump_generation() {
         std::atomic_ref<std::uint32_t>(generation).store(generation + 1, std::memory_order_relaxed);
@@ -67,9 +68,12 @@ struct Triangle {
     bool is_subsegment(int k) const { return (flags >> k) & 1u; }
     void set_subsegment(int k, bool on) {
         const auto bit = static_cast<std::uint8_t>(subsegment_bit0 << k);
-        flags = on ? static_cast<std::uint8_t>(flags | bit) : static_cast<std::uint8_t>(flags & ~bit);
+        flags =
+            on ? static_cast<std::uint8_t>(flags | bit) : static_cast<std::uint8_t>(flags & ~bit);
     }
-    bool is_ghost() const { return v[0] == ghost_vertex || v[1] == ghost_vertex || v[2] == ghost_vertex; }
+    bool is_ghost() const {
+        return v[0] == ghost_vertex || v[1] == ghost_vertex || v[2] == ghost_vertex;
+    }
     // Corner index of vertex `x`, or -1.
     int corner_of(VertexId x) const { return v[0] == x ? 0 : v[1] == x ? 1 : v[2] == x ? 2 : -1; }
 };

@@ -16,7 +16,6 @@ double squared_distance(const Square& a, const Square& b) {
     return gx * gx + gy * gy;
 }
 
-
 Quadtree::Quadtree(double x0, double y0, double side)
     : x0_(x0),
       y0_(y0),
@@ -34,7 +33,8 @@ Quadtree::Quadtree(double x0, double y0, double side)
     // max_level.  (For m + 2 > max_level no triangle qualifies: limit 0.)
     const double s = shrunk_side_squared_over_16_;
     for (int m = 0; m <= max_level + 1; ++m)
-        deferrable_below_[m] = m + 2 <= max_level ? std::ldexp(s, -2 * (m + 2)) * (1 - 0x1p-40) : 0.0;
+        deferrable_below_[m] =
+            m + 2 <= max_level ? std::ldexp(s, -2 * (m + 2)) * (1 - 0x1p-40) : 0.0;
     smallest_counted_ = std::ldexp(s, -2 * (max_level + 1)) * (1 + 0x1p-40);
     NodeAllocator a;
     const NodeId root = allocate(a);
@@ -47,7 +47,8 @@ NodeId Quadtree::allocate(NodeAllocator& alloc) {
     if (alloc.next == alloc.end) {
         constexpr std::uint32_t block = 64;
         const std::uint32_t first = next_.fetch_add(block, std::memory_order_acq_rel);
-        if (std::uint64_t{first} + block > (std::uint64_t{1} << 32) - 2) throw Error("parallel: quadtree too large");
+        if (std::uint64_t{first} + block > (std::uint64_t{1} << 32) - 2)
+            throw Error("parallel: quadtree too large");
         const std::uint32_t last = first + block - 1;
         for (std::uint32_t c = first >> 12; c <= last >> 12; ++c)
             if (!nodes_.ensure(c, true)) throw Error("parallel: quadtree too large");
@@ -70,7 +71,8 @@ NodeId Quadtree::child(NodeId id, int q, NodeAllocator& alloc) {
     return c;
 }
 
-NodeId Quadtree::cell(NodeId from, int level, std::uint32_t ix, std::uint32_t iy, NodeAllocator* alloc, NodeId& leaf) {
+NodeId Quadtree::cell(NodeId from, int level, std::uint32_t ix, std::uint32_t iy,
+                      NodeAllocator* alloc, NodeId& leaf) {
     NodeId id = from;
     leaf = no_node;
     for (;;) {

@@ -71,14 +71,18 @@ struct Node {
     std::atomic<std::int32_t> owner;  // worker + 1 whose buffer zone holds this leaf; 0: none
     LeafState* state;                 // leaves: the refinement work
 
-    NodeKind get_kind() const { return static_cast<NodeKind>(kind.load(std::memory_order_acquire)); }
+    NodeKind get_kind() const {
+        return static_cast<NodeKind>(kind.load(std::memory_order_acquire));
+    }
     NodeId child(int q) const { return child_plus1[q] - 1; }
     NodeId parent() const { return parent_plus1 - 1; }
 };
 
 struct Square {
     double x0, y0, side;
-    bool contains(const Point& p) const { return p.x >= x0 && p.x < x0 + side && p.y >= y0 && p.y < y0 + side; }
+    bool contains(const Point& p) const {
+        return p.x >= x0 && p.x < x0 + side && p.y >= y0 && p.y < y0 + side;
+    }
 };
 
 // The squared Euclidean distance between two squares (0 when they touch or
@@ -120,8 +124,12 @@ public:
 
     // Cell coordinate of x at `level`, clamped into the root.  (The hot
     // path of the counters: a truncation, no library call.)
-    std::uint32_t cell_x(double x, int level) const { return cell_coordinate((x - x0_) * inverse_sides_[level], level); }
-    std::uint32_t cell_y(double y, int level) const { return cell_coordinate((y - y0_) * inverse_sides_[level], level); }
+    std::uint32_t cell_x(double x, int level) const {
+        return cell_coordinate((x - x0_) * inverse_sides_[level], level);
+    }
+    std::uint32_t cell_y(double y, int level) const {
+        return cell_coordinate((y - y0_) * inverse_sides_[level], level);
+    }
     // The level a triangle of circumradius r = sqrt(radius_squared) is
     // counted at (see above): k = ⌊log2(ℓ_root / 4r)⌋, read off the exponent
     // of ℓ_root² / 16r² (halved), that quotient shrunk by 2^-30 first so that
@@ -145,7 +153,8 @@ public:
     // with `alloc`; with alloc == nullptr, no_node is returned instead.
     // `leaf` receives the leaf on the way down (no_node when the cell is
     // an internal node).
-    NodeId cell(NodeId from, int level, std::uint32_t ix, std::uint32_t iy, NodeAllocator* alloc, NodeId& leaf);
+    NodeId cell(NodeId from, int level, std::uint32_t ix, std::uint32_t iy, NodeAllocator* alloc,
+                NodeId& leaf);
     // The child q of node id, made if missing.
     NodeId child(NodeId id, int q, NodeAllocator& alloc);
     // The leaf whose square holds p (p clamped into the root).
@@ -164,9 +173,13 @@ public:
     // it of many triangles and one leaf level.
     struct RadiusBand {
         double most, least;  // of the circumradius²
-        bool holds(double radius_squared) const { return radius_squared <= most && radius_squared >= least; }
+        bool holds(double radius_squared) const {
+            return radius_squared <= most && radius_squared >= least;
+        }
     };
-    RadiusBand two_levels_below(int leaf_level) const { return {deferrable_below_[leaf_level], smallest_counted_}; }
+    RadiusBand two_levels_below(int leaf_level) const {
+        return {deferrable_below_[leaf_level], smallest_counted_};
+    }
 
     // A square as disk_inside reads it: its centre, and how far from the
     // centre a disk may reach in x and in y, less twice the rounding margin.
@@ -216,12 +229,13 @@ private:
     static std::uint32_t cell_coordinate(double f, int level) {
         const double top = double((std::uint32_t{1} << level) - 1);
         // std::max(0.0, NaN) is 0.0: a coordinate that is not a number lands in cell 0.
-        return static_cast<std::uint32_t>(static_cast<std::int64_t>(std::min(std::max(0.0, f), top)));
+        return static_cast<std::uint32_t>(
+            static_cast<std::int64_t>(std::min(std::max(0.0, f), top)));
     }
     NodeId allocate(NodeAllocator& alloc);
     template <class Stop>
-    NodeId zone_search(NodeId id, const Square& target, double target_side, double above, std::vector<NodeId>& out,
-                       Stop& stop) const {
+    NodeId zone_search(NodeId id, const Square& target, double target_side, double above,
+                       std::vector<NodeId>& out, Stop& stop) const {
         const Node& n = node(id);
         const Square s = square(id);
         // Every leaf below has ℓe <= max(ℓ(n), above): prune when even that is too far.
@@ -231,21 +245,23 @@ private:
             out.push_back(id);
             return stop(id) ? id : no_node;
         }
-        const double below = n.count.load(std::memory_order_relaxed) != 0 ? std::max(above, s.side) : above;
+        const double below =
+            n.count.load(std::memory_order_relaxed) != 0 ? std::max(above, s.side) : above;
         for (int q = 0; q < 4; ++q)
-            if (const NodeId found = zone_search(n.child(q), target, target_side, below, out, stop); found != no_node)
+            if (const NodeId found = zone_search(n.child(q), target, target_side, below, out, stop);
+                found != no_node)
                 return found;
         return no_node;
     }
 
     double x0_, y0_, side_;
-    double shrunk_side_squared_over_16_;  // ℓ_root² / 16 (1 - 2^-30)
+    double shrunk_side_squared_over_16_;      // ℓ_root² / 16 (1 - 2^-30)
     double deferrable_below_[max_level + 2];  // two_levels_below's limits
     double smallest_counted_;
     // Far above the rounding error of a cell coordinate (cell_x of a disk's
     // extreme x or y, computed from coordinates of the root's magnitude).
     double rounding_margin_;
-    double sides_[max_level + 2];      // ℓ_k
+    double sides_[max_level + 2];          // ℓ_k
     double inverse_sides_[max_level + 2];  // 1 / ℓ_k
     // 2^28 nodes at most (the graded pipe needs about 400 thousand): the
     // table of chunk pointers, zeroed up front, stays at 512 KiB.

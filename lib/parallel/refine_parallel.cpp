@@ -26,7 +26,9 @@ namespace gpdr::parallel {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
+double seconds(Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double>(b - a).count();
+}
 
 // Leaves a worker may hold at once outside checked mode (run_threads).
 constexpr unsigned queue_depth = 3;
@@ -35,9 +37,11 @@ constexpr unsigned queue_depth = 3;
 // point, and by the Bowyer-Watson containment every later circumdisk, lies
 // in it) and has side > 4 r_max, so relation (9) holds for it from the start.
 Square root_square(const mesh::Mesh& mesh) {
-    double min_x = std::numeric_limits<double>::infinity(), min_y = min_x, max_x = -min_x, max_y = -min_x, r_max = 0;
+    double min_x = std::numeric_limits<double>::infinity(), min_y = min_x, max_x = -min_x,
+           max_y = -min_x, r_max = 0;
     mesh::for_each_triangle(mesh, [&](mesh::TriangleId, const mesh::Triangle& t) {
-        const geometry::Circle c = geometry::circumcircle(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]));
+        const geometry::Circle c =
+            geometry::circumcircle(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]));
         const double r = std::sqrt(c.radius_squared);
         if (!std::isfinite(r)) return;
         min_x = std::min(min_x, c.centre.x - r);
@@ -57,7 +61,8 @@ void merge(refine::RefineReport& into, refine::RefineReport& from) {
     into.segment_splits += from.segment_splits;
     into.triangles_created += from.triangles_created;
     if (into.stopped == refine::RefineReport::Stop::none) into.stopped = from.stopped;
-    into.new_vertices.insert(into.new_vertices.end(), from.new_vertices.begin(), from.new_vertices.end());
+    into.new_vertices.insert(into.new_vertices.end(), from.new_vertices.begin(),
+                             from.new_vertices.end());
     from.new_vertices = {};
 }
 
@@ -71,8 +76,9 @@ void merge(refine::RefineReport& into, refine::RefineReport& from) {
 // worker, and a queue of three lets the master complete two leaves and hand
 // out two per wake-up instead of one.  A worker that finds nothing to do
 // takes over another's last leaf that has not started yet.
-void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& scheduler, const ParallelOptions& options,
-                 ParallelReport& report, std::exception_ptr& failure, const std::function<void()>& check) {
+void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& scheduler,
+                 const ParallelOptions& options, ParallelReport& report,
+                 std::exception_ptr& failure, const std::function<void()>& check) {
     struct Task {
         int entry = -1;
         NodeId leaf = no_node;
@@ -98,8 +104,10 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
             tasks[--count] = {};
         }
         bool holds(int entry) const {
-            return std::any_of(tasks, tasks + count, [&](const Task& t) { return t.entry == entry; }) ||
-                   std::any_of(finished.begin(), finished.end(), [&](const Finished& f) { return f.entry == entry; });
+            return std::any_of(tasks, tasks + count,
+                               [&](const Task& t) { return t.entry == entry; }) ||
+                   std::any_of(finished.begin(), finished.end(),
+                               [&](const Finished& f) { return f.entry == entry; });
         }
     };
     const auto threads = static_cast<unsigned>(workers.size());
@@ -152,7 +160,8 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
                 // Otherwise the result waits for the next wake-up (the
                 // master takes every worker's results each time).
                 tell_master = slot.count <= 1 || worker.stopped ||
-                              std::any_of(slots.begin(), slots.end(), [](const Slot& s) { return s.count == 0; });
+                              std::any_of(slots.begin(), slots.end(),
+                                          [](const Slot& s) { return s.count == 0; });
             }
         });
     }
@@ -202,7 +211,8 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
                 for (unsigned w = 0; w < threads && !none_left; ++w) {
                     if (held[w].size() != round) continue;
                     int entry = static_cast<int>(queue_depth * w);
-                    while (std::find(held[w].begin(), held[w].end(), entry) != held[w].end()) ++entry;
+                    while (std::find(held[w].begin(), held[w].end(), entry) != held[w].end())
+                        ++entry;
                     const NodeId leaf = scheduler.assign(entry, busy);
                     if (leaf == no_node) {
                         none_left = true;
@@ -227,12 +237,15 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
             for (unsigned w = 0; w < threads && !stop && !failure && !need_check; ++w) {
                 Slot& slot = slots[w];
                 if (slot.count != 0) continue;
-                const auto donor =
-                    std::max_element(slots.begin(), slots.end(), [](const Slot& a, const Slot& b) { return a.count < b.count; });
+                const auto donor = std::max_element(
+                    slots.begin(), slots.end(),
+                    [](const Slot& a, const Slot& b) { return a.count < b.count; });
                 if (donor->count < 2) break;
                 int entry = static_cast<int>(queue_depth * w);
-                while (entry < static_cast<int>(queue_depth * (w + 1)) && slot.holds(entry)) ++entry;
-                if (entry == static_cast<int>(queue_depth * (w + 1))) continue;  // all await completion
+                while (entry < static_cast<int>(queue_depth * (w + 1)) && slot.holds(entry))
+                    ++entry;
+                if (entry == static_cast<int>(queue_depth * (w + 1)))
+                    continue;  // all await completion
                 Task moved = std::move(donor->tasks[--donor->count]);
                 donor->tasks[donor->count] = {};
                 scheduler.move_assignment(moved.entry, entry);
@@ -250,7 +263,8 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
             report.master.managing += seconds(t0, t1);
             if (busy == 0) break;
             master_cv.wait(lock, [&] {
-                return std::any_of(slots.begin(), slots.end(), [](const Slot& s) { return !s.finished.empty(); });
+                return std::any_of(slots.begin(), slots.end(),
+                                   [](const Slot& s) { return !s.finished.empty(); });
             });
             report.master.waiting += seconds(t1, Clock::now());
         }
@@ -262,10 +276,11 @@ void run_threads(std::vector<std::unique_ptr<Worker>>& workers, Scheduler& sched
 
 }  // namespace
 
-void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in, const ParallelOptions& options,
-                     ParallelReport& report) {
+void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in,
+                     const ParallelOptions& options, ParallelReport& report) {
     const unsigned threads = thread_count(options.threads);
-    const unsigned granularity = options.granularity != 0 ? options.granularity : default_granularity(threads);
+    const unsigned granularity =
+        options.granularity != 0 ? options.granularity : default_granularity(threads);
     report.threads = threads;
     report.granularity = granularity;
     refine::RefineSettings settings = settings_in;
@@ -300,8 +315,8 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in
         refine::Leaf& w = root_node.state->work;
         for (auto q : w.handed_off_triangles) {
             const mesh::Triangle& t = mesh.triangle(q.id);
-            const refine::TriangleMeasures m =
-                refine::QualityTest::measure(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]));
+            const refine::TriangleMeasures m = refine::QualityTest::measure(
+                mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]));
             q.where = w.where(m.circle.centre);
             w.push_poor(q, w.sigma(m.circle.radius_squared),
                         run.quality().shape_rank(m.shortest.length_squared, m.circle.radius_squared,
@@ -321,7 +336,8 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in
         ++report.checks;
         for (const auto& w : workers)
             if (w->zone_escapes != 0)
-                report.problems.push_back("a worker counted a triangle in a leaf outside its buffer zone");
+                report.problems.push_back(
+                    "a worker counted a triangle in a leaf outside its buffer zone");
     };
 
     if (threads == 1) {
@@ -356,7 +372,8 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in
         report.handed_off_local += w->handed_off_local;
         report.relation9_exceptions += w->relation9_exceptions;
         if (w->zone_escapes != 0 && options.checked)
-            report.problems.push_back("a worker counted a triangle in a leaf outside its buffer zone");
+            report.problems.push_back(
+                "a worker counted a triangle in a leaf outside its buffer zone");
     }
     report.serialised = scheduler.serial();
     std::vector<NodeId> leaves;

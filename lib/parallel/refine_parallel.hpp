@@ -45,12 +45,13 @@ struct ParallelReport {
     ThreadTimes master;
     std::vector<ThreadTimes> workers;
 
-    std::uint64_t assignments = 0;     // leaves handed to workers
-    std::uint64_t splits = 0;          // leaf splits
-    std::uint64_t balance_splits = 0;  // of them, idle leaves split beside the leaf refined (Scheduler::take_balance_candidates)
-    std::uint64_t leaves = 0;          // leaves at the end
-    int depth = 0;                     // deepest leaf level
-    unsigned most_concurrent = 0;      // most leaves held at once (refined or handed out next)
+    std::uint64_t assignments = 0;        // leaves handed to workers
+    std::uint64_t splits = 0;             // leaf splits
+    std::uint64_t balance_splits = 0;     // of them, idle leaves split beside the leaf refined
+                                          // (Scheduler::take_balance_candidates)
+    std::uint64_t leaves = 0;             // leaves at the end
+    int depth = 0;                        // deepest leaf level
+    unsigned most_concurrent = 0;         // most leaves held at once (refined or handed out next)
     std::uint64_t handed_off_local = 0;   // work routed by a worker into its own buffer zone
     std::uint64_t handed_off_master = 0;  // work routed through the master
     // Triangles created larger than relation (9) allows for some leaf (the
@@ -93,13 +94,13 @@ inline unsigned default_granularity(unsigned threads) { return threads <= 2 ? 5 
 // Refines `mesh` (the input refine::refine_mesh takes) in parallel.  Throws
 // what refine_mesh throws; a worker's exception is rethrown on the calling
 // thread after all threads have stopped.
-void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings, const ParallelOptions& options,
-                     ParallelReport& report);
+void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings,
+                     const ParallelOptions& options, ParallelReport& report);
 
 // The job pipeline's entry: threads 0 = hardware threads, granularity 0 =
 // default_granularity(threads).
-inline void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings, unsigned threads,
-                            unsigned granularity, ParallelReport& report) {
+inline void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings,
+                            unsigned threads, unsigned granularity, ParallelReport& report) {
     ParallelOptions o;
     o.threads = threads;
     o.granularity = granularity;

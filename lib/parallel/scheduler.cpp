@@ -82,7 +82,8 @@ NodeId Scheduler::assign(int entry, unsigned busy) {
         const auto [k, x] = queue_.top();
         queue_.pop();
         Info& i = info(x);
-        if (!i.queued || i.queued_key != k) continue;  // stale: the leaf was queued again with another key
+        if (!i.queued || i.queued_key != k)
+            continue;  // stale: the leaf was queued again with another key
         if (tree_.node(x).get_kind() != NodeKind::leaf) {
             i.queued = false;  // split since: its children were offered
             continue;
@@ -100,7 +101,8 @@ NodeId Scheduler::assign(int entry, unsigned busy) {
             blocked.push_back({i.queued_key, x});
             continue;
         }
-        const NodeId held = tree_.zone_until(x, zone_scratch_, [&](NodeId z) { return info(z).held; });
+        const NodeId held =
+            tree_.zone_until(x, zone_scratch_, [&](NodeId z) { return info(z).held; });
         if (held != no_node) {
             park(k, x, held);
             continue;
@@ -118,9 +120,10 @@ NodeId Scheduler::assign(int entry, unsigned busy) {
             if (a.leaf == no_node) continue;
             for (NodeId z : zone_scratch_)
                 if (std::find(a.zone.begin(), a.zone.end(), z) != a.zone.end())
-                    report_.problems.push_back(fmt::format(
-                        "buffer zones overlap: leaf {} handed out while leaf {} (sharing leaf {}) is refined",
-                        chosen, a.leaf, z));
+                    report_.problems.push_back(
+                        fmt::format("buffer zones overlap: leaf {} handed out while leaf {} "
+                                    "(sharing leaf {}) is refined",
+                                    chosen, a.leaf, z));
         }
     }
     info(chosen).queued = false;
@@ -164,8 +167,8 @@ void Scheduler::publish_split(NodeId leaf) {
     report_.depth = std::max(report_.depth, int(n.level) + 1);
 }
 
-void Scheduler::complete(int entry, bool split, const std::vector<NodeId>& balanced, std::vector<Routed>& outbox,
-                         bool outgrew_root) {
+void Scheduler::complete(int entry, bool split, const std::vector<NodeId>& balanced,
+                         std::vector<Routed>& outbox, bool outgrew_root) {
     Active& a = active_[entry];
     const NodeId leaf = a.leaf;
     if (split) publish_split(leaf);
@@ -226,10 +229,12 @@ void verify_quadtree(const mesh::Mesh& mesh, Quadtree& tree, std::vector<std::st
         list_in(n.state->deferred, {l, n.level, tree.square(l)});
         for (int q = 0; q < 4; ++q)
             list_in(n.state->deferred_in_child[q],
-                    {l, n.level + 1, tree.cell_square(n.level + 1, 2 * n.ix + (q & 1), 2 * n.iy + (q >> 1))});
+                    {l, n.level + 1,
+                     tree.cell_square(n.level + 1, 2 * n.ix + (q & 1), 2 * n.iy + (q >> 1))});
     }
     mesh::for_each_triangle(mesh, [&](mesh::TriangleId id, const mesh::Triangle& t) {
-        const geometry::Circle c = geometry::circumcircle(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]));
+        const geometry::Circle c =
+            geometry::circumcircle(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]));
         const CellRecord record = cell_record(tree, c.centre, c.radius_squared, outgrew);
         const std::uint32_t i = mesh::index(id);
         const bool counted = t.user_tag == counted_tag;
@@ -242,8 +247,9 @@ void verify_quadtree(const mesh::Mesh& mesh, Quadtree& tree, std::vector<std::st
             const int k = tree.level_of(c.radius_squared);
             if (counted || record == 0 || k < in.level + 2 ||
                 !tree.disk_inside(tree.room(in.square), c.centre, c.radius_squared))
-                problem(fmt::format("triangle {} (level {}, tag {}) is deferred in leaf {} for level {}", i, k,
-                                    int(t.user_tag), in.leaf, in.level));
+                problem(fmt::format(
+                    "triangle {} (level {}, tag {}) is deferred in leaf {} for level {}", i, k,
+                    int(t.user_tag), in.leaf, in.level));
         } else if (!counted) {
             if (record != 0) problem(fmt::format("triangle {} is neither counted nor deferred", i));
         } else if (record == 0) {
@@ -252,11 +258,13 @@ void verify_quadtree(const mesh::Mesh& mesh, Quadtree& tree, std::vector<std::st
         if (counted && record != 0) {
             const int level = int((record >> 56) & 63u);
             const unsigned mask = unsigned((record >> 52) & 15u);
-            const auto x0 = std::uint32_t((record >> 26) & ((1u << 26) - 1)), y0 = std::uint32_t(record & ((1u << 26) - 1));
+            const auto x0 = std::uint32_t((record >> 26) & ((1u << 26) - 1)),
+                       y0 = std::uint32_t(record & ((1u << 26) - 1));
             for (unsigned b = 0; b < 4; ++b) {
                 if (!(mask & (1u << b))) continue;
                 NodeId leaf;
-                const NodeId n = tree.cell(Quadtree::root(), level, x0 + (b & 1u), y0 + (b >> 1), nullptr, leaf);
+                const NodeId n =
+                    tree.cell(Quadtree::root(), level, x0 + (b & 1u), y0 + (b >> 1), nullptr, leaf);
                 if (n == no_node)
                     problem(fmt::format("triangle {}: its counter cell was never made", i));
                 else
@@ -275,22 +283,25 @@ void verify_quadtree(const mesh::Mesh& mesh, Quadtree& tree, std::vector<std::st
                 continue;
             }
             if (!(r < tree.effective_side(n) / 4))
-                problem(fmt::format("relation (9) fails: triangle {} (r = {}) meets leaf {} of effective side {}", i,
-                                    r, n, tree.effective_side(n)));
+                problem(fmt::format(
+                    "relation (9) fails: triangle {} (r = {}) meets leaf {} of effective side {}",
+                    i, r, n, tree.effective_side(n)));
         }
     });
     for (NodeId n = 0; n < tree.node_end(); ++n) {
         const auto it = expected.find(n);
         const std::int32_t want = it == expected.end() ? 0 : it->second;
         const std::int32_t have = tree.node(n).count.load(std::memory_order_relaxed);
-        if (want != have) problem(fmt::format("quadtree node {}: count {}, expected {}", n, have, want));
+        if (want != have)
+            problem(fmt::format("quadtree node {}: count {}, expected {}", n, have, want));
     }
     double area = 0;
     for (NodeId l : leaves) {
         const Square s = tree.square(l);
         area += s.side * s.side;
         if (tree.node(l).get_kind() != NodeKind::leaf || tree.node(l).state == nullptr)
-            problem(fmt::format("quadtree node {} is neither internal nor a leaf with work lists", l));
+            problem(
+                fmt::format("quadtree node {} is neither internal nor a leaf with work lists", l));
         if (tree.node(l).owner.load(std::memory_order_relaxed) != 0)
             problem(fmt::format("leaf {} is still held while no worker is busy", l));
     }

@@ -51,7 +51,8 @@ namespace gpdr::parallel {
 
 class Scheduler {
 public:
-    Scheduler(Quadtree& tree, ParallelReport& report, bool checked) : tree_(tree), report_(report), checked_(checked) {}
+    Scheduler(Quadtree& tree, ParallelReport& report, bool checked)
+        : tree_(tree), report_(report), checked_(checked) {}
 
     // Queues a leaf that may have work (master thread only, leaf not held).
     void offer(NodeId leaf);
@@ -79,14 +80,16 @@ public:
     // the size of the leaves being refined beside them: the master then
     // scheduled for 0.18 s, and -j2 refined that square in 0.53-0.70x
     // -j1's time instead of 0.77-0.89x (four interleaved rounds).
-    std::vector<NodeId> take_balance_candidates(int entry) { return std::move(active_[entry].balance); }
+    std::vector<NodeId> take_balance_candidates(int entry) {
+        return std::move(active_[entry].balance);
+    }
     // The assignment of entry `from`, not started, moves to entry `to`.
     void move_assignment(int from, int to);
     // The worker refining entry's leaf returned it (split or not, and
     // `balanced`: the balance candidates it split too): frees its zone, applies the
     // splits, takes the work it routed out of its zone.
-    void complete(int entry, bool split, const std::vector<NodeId>& balanced, std::vector<Routed>& outbox,
-                  bool outgrew_root);
+    void complete(int entry, bool split, const std::vector<NodeId>& balanced,
+                  std::vector<Routed>& outbox, bool outgrew_root);
     // Work for a leaf outside the sender's zone.
     void deliver(const Routed& r);
     bool serial() const { return serial_; }
@@ -118,7 +121,9 @@ private:
     ParallelReport& report_;
     bool checked_;
     bool serial_ = false;
-    std::priority_queue<std::pair<long, NodeId>, std::vector<std::pair<long, NodeId>>, std::greater<>> queue_;
+    std::priority_queue<std::pair<long, NodeId>, std::vector<std::pair<long, NodeId>>,
+                        std::greater<>>
+        queue_;
     std::vector<Active> active_;  // by entry
     std::vector<NodeId> zone_scratch_;
 };

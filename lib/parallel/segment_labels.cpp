@@ -30,7 +30,8 @@ SegmentLabels::SegmentLabels(mesh::Mesh& mesh, std::span<const mesh::VertexId> g
                                       std::uint64_t{std::max(mesh::index(a), mesh::index(b))} << 32;
             if (!labelled.insert(key).second) continue;
             std::array<mesh::VertexId, 2> ends{mesh::no_vertex, mesh::no_vertex};
-            if (!refine::walk_segment_ends(mesh, mesh::EdgeRef(t, k), ends)) ends = {mesh::no_vertex, mesh::no_vertex};
+            if (!refine::walk_segment_ends(mesh, mesh::EdgeRef(t, k), ends))
+                ends = {mesh::no_vertex, mesh::no_vertex};
             mesh::SubsegmentInfo labelled = info != nullptr ? *info : mesh::SubsegmentInfo{};
             original_.push_back(labelled.segment);
             labelled.segment = static_cast<std::uint32_t>(ends_.size() / 2);
@@ -44,12 +45,14 @@ SegmentLabels::SegmentLabels(mesh::Mesh& mesh, std::span<const mesh::VertexId> g
 void SegmentLabels::restore() {
     if (original_.empty()) return;
     std::vector<std::tuple<mesh::VertexId, mesh::VertexId, mesh::SubsegmentInfo>> changed;
-    mesh_.subsegments().for_each([&](mesh::VertexId a, mesh::VertexId b, const mesh::SubsegmentInfo& info) {
-        if (info.segment == mesh::SubsegmentInfo::no_segment || info.segment < first_label_) return;
-        mesh::SubsegmentInfo back = info;
-        back.segment = original_[info.segment - first_label_];
-        changed.emplace_back(a, b, back);
-    });
+    mesh_.subsegments().for_each(
+        [&](mesh::VertexId a, mesh::VertexId b, const mesh::SubsegmentInfo& info) {
+            if (info.segment == mesh::SubsegmentInfo::no_segment || info.segment < first_label_)
+                return;
+            mesh::SubsegmentInfo back = info;
+            back.segment = original_[info.segment - first_label_];
+            changed.emplace_back(a, b, back);
+        });
     for (const auto& [a, b, info] : changed) mesh_.subsegments().set(a, b, info);
 }
 

@@ -17,7 +17,9 @@ namespace gpdr::parallel {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double seconds_since(Clock::time_point t) {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+}
 
 constexpr std::uint64_t coordinate_mask = (std::uint64_t{1} << 26) - 1;
 
@@ -25,7 +27,8 @@ bool finite(const Point& p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
 }  // namespace
 
-CellRecord cell_record(const Quadtree& tree, const Point& centre, double radius_squared, bool& outgrew_root) {
+CellRecord cell_record(const Quadtree& tree, const Point& centre, double radius_squared,
+                       bool& outgrew_root) {
     const int k = tree.level_of(radius_squared);
     if (k > max_level) return 0;  // too small to matter for any leaf we may make
     if (k < 0) {
@@ -50,14 +53,16 @@ CellRecord cell_record(const Quadtree& tree, const Point& centre, double radius_
         const unsigned centre_bit = (cx != x_lo ? 1u : 0u) | (cy != y_lo ? 2u : 0u);
         const unsigned diagonal = 3u - centre_bit;
         mask = 15u & ~(1u << diagonal);
-        if (disk_meets(tree.cell_square(k, x_lo + (diagonal & 1u), y_lo + (diagonal >> 1)), centre, r))
+        if (disk_meets(tree.cell_square(k, x_lo + (diagonal & 1u), y_lo + (diagonal >> 1)), centre,
+                       r))
             mask |= 1u << diagonal;
     }
-    return (std::uint64_t{1} << 63) | (std::uint64_t(k) << 56) | (mask << 52) | (std::uint64_t(x_lo) << 26) |
-           std::uint64_t(y_lo);
+    return (std::uint64_t{1} << 63) | (std::uint64_t(k) << 56) | (mask << 52) |
+           (std::uint64_t(x_lo) << 26) | std::uint64_t(y_lo);
 }
 
-Worker::Worker(mesh::Mesh& mesh, refine::RefineRun& run, Quadtree& tree, const ParallelOptions& options)
+Worker::Worker(mesh::Mesh& mesh, refine::RefineRun& run, Quadtree& tree,
+               const ParallelOptions& options)
     : mesh_(mesh),
       run_(run),
       tree_(tree),
@@ -111,7 +116,8 @@ void Worker::apply(CellRecord record, int delta, bool check_zone) {
             n.count.fetch_add(delta, std::memory_order_relaxed);
             if (delta > 0) ++relation9_exceptions;
         } else {
-            n.count.store(n.count.load(std::memory_order_relaxed) + delta, std::memory_order_relaxed);
+            n.count.store(n.count.load(std::memory_order_relaxed) + delta,
+                          std::memory_order_relaxed);
             if (leaf != no_node && check_zone && options_.checked &&
                 tree_.node(leaf).owner.load(std::memory_order_relaxed) != tag_)
                 ++zone_escapes;
@@ -164,18 +170,21 @@ Worker::DeferralTargets Worker::deferral_targets(NodeId leaf) const {
     t.child_band = tree_.two_levels_below(n.level + 1);
     t.room = tree_.room(tree_.cell_square(n.level, n.ix, n.iy));
     for (int q = 0; q < 4; ++q)
-        t.child_rooms[q] = tree_.room(tree_.cell_square(n.level + 1, 2 * n.ix + (q & 1), 2 * n.iy + (q >> 1)));
+        t.child_rooms[q] =
+            tree_.room(tree_.cell_square(n.level + 1, 2 * n.ix + (q & 1), 2 * n.iy + (q >> 1)));
     const Square last = tree_.cell_square(n.level + 1, 2 * n.ix + 1, 2 * n.iy + 1);
     t.middle = {last.x0, last.y0};
     return t;
 }
 
-DeferredList* Worker::deferral_list(const geometry::Circle& c, const DeferralTargets& at, LeafState& leaf) const {
+DeferredList* Worker::deferral_list(const geometry::Circle& c, const DeferralTargets& at,
+                                    LeafState& leaf) const {
     // The centre picks the child; the room test alone decides (a centre
     // rounded onto the wrong side fails it).  Both tests are asked without
     // a branch: most triangles pass them.
     const int q = (c.centre.x >= at.middle.x ? 1 : 0) | (c.centre.y >= at.middle.y ? 2 : 0);
-    if (at.child_band.holds(c.radius_squared) & tree_.disk_inside(at.child_rooms[q], c.centre, c.radius_squared))
+    if (at.child_band.holds(c.radius_squared) &
+        tree_.disk_inside(at.child_rooms[q], c.centre, c.radius_squared))
         return &leaf.deferred_in_child[q];
     if (at.band.holds(c.radius_squared) & tree_.disk_inside(at.room, c.centre, c.radius_squared))
         return &leaf.deferred;
@@ -199,21 +208,22 @@ void Worker::hand_down_deferred(NodeId leaf) {
         [&](const DeferredTriangle& e) {
             if (!alive(e)) return;
             const mesh::Triangle& r = mesh_.triangle(e.t);
-            const geometry::Circle c =
-                geometry::circumcircle(mesh_.point(r.v[0]), mesh_.point(r.v[1]), mesh_.point(r.v[2]));
+            const geometry::Circle c = geometry::circumcircle(
+                mesh_.point(r.v[0]), mesh_.point(r.v[1]), mesh_.point(r.v[2]));
             const int q = (c.centre.x >= middle.x ? 1 : 0) | (c.centre.y >= middle.y ? 2 : 0);
             if (DeferredList* list = deferral_list(c, targets[q], *states[q]))
                 list->push(e, deferred_blocks_);
             else
                 count(e.t, c);
         },
-        [&](const DeferredTriangle& e) { prefetch(e.t); }, [&](const DeferredTriangle& e) { prefetch_corners(e); },
-        deferred_blocks_);
+        [&](const DeferredTriangle& e) { prefetch(e.t); },
+        [&](const DeferredTriangle& e) { prefetch_corners(e); }, deferred_blocks_);
 }
 
 void Worker::count_all() {
     mesh::for_each_triangle(mesh_, [&](mesh::TriangleId id, const mesh::Triangle& r) {
-        count(id, geometry::circumcircle(mesh_.point(r.v[0]), mesh_.point(r.v[1]), mesh_.point(r.v[2])));
+        count(id, geometry::circumcircle(mesh_.point(r.v[0]), mesh_.point(r.v[1]),
+                                         mesh_.point(r.v[2])));
     });
 }
 
@@ -227,7 +237,8 @@ void Worker::tagged_triangles_gone(std::span<const mesh::TaggedTriangle> gone) {
 }
 
 // A new triangle, or one a flip changed (its tag is 0: see above).
-void Worker::triangle_created(mesh::TriangleId t, std::uint32_t generation, const geometry::Circle& circumcircle) {
+void Worker::triangle_created(mesh::TriangleId t, std::uint32_t generation,
+                              const geometry::Circle& circumcircle) {
     if (current_ == no_node) [[unlikely]] {
         count_now(t, circumcircle);
         return;
@@ -274,17 +285,19 @@ void Worker::deliver(const Routed& r, NodeId splitting) {
     }
 }
 
-void Worker::route_triangle(refine::QueuedTriangle q, bool steiner_point_if_centre_inside, const OwnedBox& inside,
-                            NodeId splitting) {
+void Worker::route_triangle(refine::QueuedTriangle q, bool steiner_point_if_centre_inside,
+                            const OwnedBox& inside, NodeId splitting) {
     const mesh::Triangle& t = mesh_.triangle(q.id);
-    if (t.load_generation() != q.generation || !t.live()) return;  // stale (generation first: mesh/triangle.hpp)
+    if (t.load_generation() != q.generation || !t.live())
+        return;  // stale (generation first: mesh/triangle.hpp)
     const refine::TriangleMeasures m =
         refine::QualityTest::measure(mesh_.point(t.v[0]), mesh_.point(t.v[1]), mesh_.point(t.v[2]));
     Routed r;
     r.triangle = q;
     r.at = m.circle.centre;
     r.radius_squared = m.circle.radius_squared;
-    r.rank = run_.quality().shape_rank(m.shortest.length_squared, m.circle.radius_squared, refine::Leaf::rank_count);
+    r.rank = run_.quality().shape_rank(m.shortest.length_squared, m.circle.radius_squared,
+                                       refine::Leaf::rank_count);
     // Classification routes by circumcentre, refinement by the Steiner
     // point f(t): a triangle handed off although its centre is inside was
     // handed off for its Steiner point, and one kept although its centre is
@@ -326,7 +339,8 @@ void Worker::split(NodeId leaf) {
     }
     // The leaf's lists for its children become theirs, unread.
     LeafState& parent = *tree_.node(leaf).state;
-    for (int q = 0; q < 4; ++q) tree_.node(tree_.node(leaf).child(q)).state->deferred.take(parent.deferred_in_child[q]);
+    for (int q = 0; q < 4; ++q)
+        tree_.node(tree_.node(leaf).child(q)).state->deferred.take(parent.deferred_in_child[q]);
     hand_down_deferred(leaf);
     // The poor triangles go to the child their `where` names (see
     // move_poor_to_children); the mesh is not looked at (stale entries go
@@ -334,9 +348,11 @@ void Worker::split(NodeId leaf) {
     // used up is measured and routed afresh.
     refine::Leaf& work = tree_.node(leaf).state->work;
     const Node& n = tree_.node(leaf);
-    refine::Leaf* const children[4] = {&tree_.node(n.child(0)).state->work, &tree_.node(n.child(1)).state->work,
-                                       &tree_.node(n.child(2)).state->work, &tree_.node(n.child(3)).state->work};
-    work.move_poor_to_children(children, [&](refine::QueuedTriangle q) { route_triangle(q, false, s, leaf); });
+    refine::Leaf* const children[4] = {
+        &tree_.node(n.child(0)).state->work, &tree_.node(n.child(1)).state->work,
+        &tree_.node(n.child(2)).state->work, &tree_.node(n.child(3)).state->work};
+    work.move_poor_to_children(
+        children, [&](refine::QueuedTriangle q) { route_triangle(q, false, s, leaf); });
     refine::QueuedSubsegment e;
     while (work.pop_subsegment(e)) route_subsegment(e, leaf);
     // The emptied queues would otherwise hold their capacity (tens of
@@ -406,7 +422,8 @@ bool Worker::run(NodeId leaf, std::int32_t tag, const std::vector<NodeId>& balan
     balanced.clear();
     for (const NodeId e : balance) {
         const Node& b = tree_.node(e);
-        if (stopped || b.level >= max_level || !b.state->work.idle() || b.count.load(std::memory_order_relaxed) != 0)
+        if (stopped || b.level >= max_level || !b.state->work.idle() ||
+            b.count.load(std::memory_order_relaxed) != 0)
             continue;
         split(e);
         balanced.push_back(e);

@@ -37,9 +37,9 @@ struct Routed {
     bool is_triangle = true;
     refine::QueuedTriangle triangle{};
     refine::QueuedSubsegment subsegment{};
-    Point at;                 // the point that decides the leaf
-    double radius_squared = 0; // triangles: for the target leaf's σ
-    int rank = 0;             // triangles: shape rank
+    Point at;                   // the point that decides the leaf
+    double radius_squared = 0;  // triangles: for the target leaf's σ
+    int rank = 0;               // triangles: shape rank
 };
 
 // Puts routed work into a leaf's lists (the worker for its own zone, the
@@ -107,11 +107,13 @@ using CellRecord = std::uint64_t;
 // corners as they were (mesh::TaggedTriangle), whose circumcircle, computed
 // by the same function from the same corners in the same order, gives the
 // same record bit for bit.
-CellRecord cell_record(const Quadtree& tree, const Point& centre, double radius_squared, bool& outgrew_root);
+CellRecord cell_record(const Quadtree& tree, const Point& centre, double radius_squared,
+                       bool& outgrew_root);
 
 class Worker final : public refine::MeshObserver {
 public:
-    Worker(mesh::Mesh& mesh, refine::RefineRun& run, Quadtree& tree, const ParallelOptions& options);
+    Worker(mesh::Mesh& mesh, refine::RefineRun& run, Quadtree& tree,
+           const ParallelOptions& options);
 
     // Counts every live triangle (single-threaded, before refinement starts).
     void count_all();
@@ -123,12 +125,13 @@ public:
     bool run(NodeId leaf, std::int32_t tag, const std::vector<NodeId>& balance = {});
 
     void tagged_triangles_gone(std::span<const mesh::TaggedTriangle> gone) override;
-    void triangle_created(mesh::TriangleId t, std::uint32_t generation, const geometry::Circle& circumcircle) override;
+    void triangle_created(mesh::TriangleId t, std::uint32_t generation,
+                          const geometry::Circle& circumcircle) override;
 
     LeafState* new_leaf_state(NodeId leaf);
 
     refine::RefineReport report;
-    std::vector<Routed> outbox;  // handed to the master after each run
+    std::vector<Routed> outbox;    // handed to the master after each run
     std::vector<NodeId> balanced;  // (see run)
     ThreadTimes times;
     std::uint64_t handed_off_local = 0;
@@ -211,7 +214,9 @@ private:
     DeferredList* deferral_list(const geometry::Circle& circumcircle, const DeferralTargets& at,
                                 LeafState& leaf) const;
     // Whether e's triangle is the one listed (its slot's generation has not moved on).
-    bool alive(DeferredTriangle e) const { return mesh_.triangle(e.t).load_generation() == e.generation; }
+    bool alive(DeferredTriangle e) const {
+        return mesh_.triangle(e.t).load_generation() == e.generation;
+    }
     // Asks for triangle t's slot ahead of reading it (deferred_list.hpp: look_ahead).
     void prefetch(mesh::TriangleId t) const { __builtin_prefetch(&mesh_.triangle(t)); }
     // The same for the points of e's corners, if e is alive (its corners are
@@ -224,8 +229,8 @@ private:
     void apply(CellRecord record, int delta, bool check_zone);
     // Where the work item should go: a leaf of this worker's zone (pushed
     // there) or the master's outbox.
-    void route_triangle(refine::QueuedTriangle q, bool steiner_point_if_centre_inside, const OwnedBox& inside,
-                        NodeId splitting);
+    void route_triangle(refine::QueuedTriangle q, bool steiner_point_if_centre_inside,
+                        const OwnedBox& inside, NodeId splitting);
     void route_subsegment(refine::QueuedSubsegment s, NodeId splitting);
     void deliver(const Routed& r, NodeId splitting);
     bool should_split(const Node& n, LeafState& state);

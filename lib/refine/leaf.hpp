@@ -81,7 +81,7 @@ public:
     // σ = ⌊log2(ℓ / r)⌋ from r², clamped (see above).
     int sigma(double radius_squared) const {
         const double ratio = side_squared_ / radius_squared;
-        if (!(ratio >= 1.0)) return 0;  // r >= ℓ, or not a number
+        if (!(ratio >= 1.0)) return 0;         // r >= ℓ, or not a number
         const int s = std::ilogb(ratio) >> 1;  // ⌊log2(ℓ²/r²)⌋ / 2, floored
         return s < bucket_count ? s : bucket_count - 1;
     }
@@ -107,14 +107,16 @@ public:
         constexpr double last = double((1u << where_levels) - 1);
         const auto cell = [&](double f) {
             // std::max(0.0, NaN) is 0.0: a point that is not a number lands in cell 0.
-            return static_cast<std::uint32_t>(static_cast<std::int64_t>(std::min(std::max(0.0, f), last)));
+            return static_cast<std::uint32_t>(
+                static_cast<std::int64_t>(std::min(std::max(0.0, f), last)));
         };
         return (cell((p.x - corner_.x) * cells_per_side_) << column_shift) |
                (cell((p.y - corner_.y) * cells_per_side_) << row_shift) | where_levels;
     }
     // The first quadrant of `where`, and `where` as seen from that child.
     static int first_quadrant(std::uint32_t where) {
-        return static_cast<int>((where >> 31) | (((where >> (row_shift + where_levels - 1)) & 1u) << 1));
+        return static_cast<int>((where >> 31) |
+                                (((where >> (row_shift + where_levels - 1)) & 1u) << 1));
     }
     static std::uint32_t in_child(std::uint32_t where) {
         constexpr std::uint32_t field = (1u << where_levels) - 1;
@@ -252,7 +254,8 @@ private:
     // Level `level`'s stack for `rank`, made if missing; entries pushed
     // straight onto it are then counted by note_pushed.
     std::vector<QueuedTriangle>& stack(int level, int rank) {
-        if (static_cast<std::size_t>(level) >= levels_.size()) levels_.resize(static_cast<std::size_t>(level) + 1);
+        if (static_cast<std::size_t>(level) >= levels_.size())
+            levels_.resize(static_cast<std::size_t>(level) + 1);
         auto& l = levels_[static_cast<std::size_t>(level)];
         if (!l) l = std::make_unique<Level>();
         return l->ranks[rank];

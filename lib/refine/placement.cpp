@@ -12,7 +12,8 @@ namespace gpdr::refine {
 
 using geometry::Point;
 
-PoorTriangle describe_poor_triangle(const mesh::Mesh& mesh, mesh::TriangleId id, const QualityTest& quality) {
+PoorTriangle describe_poor_triangle(const mesh::Mesh& mesh, mesh::TriangleId id,
+                                    const QualityTest& quality) {
     PoorTriangle t;
     t.mesh = &mesh;
     t.id = id;
@@ -23,12 +24,15 @@ PoorTriangle describe_poor_triangle(const mesh::Mesh& mesh, mesh::TriangleId id,
     t.shortest_edge = e.edge;
     t.shortest_length = std::sqrt(e.length_squared);
     t.rho_bar = quality.rho_bar();
-    t.disk = {t.circle.centre, std::sqrt(t.circle.radius_squared) - std::numbers::sqrt2 * t.shortest_length};
+    t.disk = {t.circle.centre,
+              std::sqrt(t.circle.radius_squared) - std::numbers::sqrt2 * t.shortest_length};
     t.quality = &quality;
     return t;
 }
 
-Point CircumcentrePlacement::place(const PoorTriangle& t, PlacementScratch&) const { return t.circle.centre; }
+Point CircumcentrePlacement::place(const PoorTriangle& t, PlacementScratch&) const {
+    return t.circle.centre;
+}
 
 Point OffCentrePlacement::place(const PoorTriangle& t, PlacementScratch&) const {
     // 5% short of Üngör's exact off-centre (as Triangle does): the exact
@@ -36,7 +40,8 @@ Point OffCentrePlacement::place(const PoorTriangle& t, PlacementScratch&) const 
     // may leave just poor, costing another Steiner point.  Where the shorter
     // point leaves the selection disk, the exact one (inside it for
     // rho_bar >= sqrt 2) is used.
-    const Point near = geometry::off_centre(t.corner[0], t.corner[1], t.corner[2], t.rho_bar, off_centre_fraction);
+    const Point near =
+        geometry::off_centre(t.corner[0], t.corner[1], t.corner[2], t.rho_bar, off_centre_fraction);
     if (admissible_point(t, near)) return near;
     const Point p = geometry::off_centre(t.corner[0], t.corner[1], t.corner[2], t.rho_bar);
     if (admissible_point(t, p)) return p;
@@ -51,7 +56,8 @@ Point OffCentrePlacement::place(const PoorTriangle& t, PlacementScratch&) const 
     return {t.circle.centre.x + s * dx, t.circle.centre.y + s * dy};
 }
 
-int OptimisationPlacement::cavity_penalty(const PoorTriangle& t, const Point& p, PlacementScratch& scratch) {
+int OptimisationPlacement::cavity_penalty(const PoorTriangle& t, const Point& p,
+                                          PlacementScratch& scratch) {
     const mesh::Mesh& mesh = *t.mesh;
     auto& cavity = scratch.cavity;
     cavity.clear();
@@ -127,7 +133,8 @@ Point OptimisationPlacement::place(const PoorTriangle& t, PlacementScratch& scra
             for (int i = 0; i < samples_; ++i) {
                 const double s = -1.0 + 2.0 * (i + 1) / (samples_ + 1);
                 const double phi = beta + alpha * s;
-                const Point c{gamma.centre.x + rg * std::cos(phi), gamma.centre.y + rg * std::sin(phi)};
+                const Point c{gamma.centre.x + rg * std::cos(phi),
+                              gamma.centre.y + rg * std::sin(phi)};
                 if (!in_selection_disk(t, c)) continue;
                 const int score = cavity_penalty(t, c, scratch);
                 if (score < best_score) {
@@ -145,9 +152,12 @@ const PlacementStrategy& builtin_placement(Placement kind) {
     static const OffCentrePlacement off_centre;
     static const OptimisationPlacement optimisation;
     switch (kind) {
-    case Placement::circumcentre: return circumcentre;
-    case Placement::optimisation: return optimisation;
-    case Placement::off_centre: break;
+        case Placement::circumcentre:
+            return circumcentre;
+        case Placement::optimisation:
+            return optimisation;
+        case Placement::off_centre:
+            break;
     }
     return off_centre;
 }

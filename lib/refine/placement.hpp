@@ -52,12 +52,12 @@ namespace gpdr::refine {
 struct PoorTriangle {
     const mesh::Mesh* mesh = nullptr;
     mesh::TriangleId id = mesh::no_triangle;
-    geometry::Point corner[3];     // counter-clockwise, corner k opposite edge k
-    geometry::Circle circle;       // circumcircle (centre, squared radius)
-    int shortest_edge = 0;         // index of the shortest edge (opposite that corner)
-    double shortest_length = 0;    // l
-    double rho_bar = 0;            // the radius-edge bound (+infinity: no angle test)
-    geometry::Disk disk;           // the selection disk (radius <= 0: empty)
+    geometry::Point corner[3];             // counter-clockwise, corner k opposite edge k
+    geometry::Circle circle;               // circumcircle (centre, squared radius)
+    int shortest_edge = 0;                 // index of the shortest edge (opposite that corner)
+    double shortest_length = 0;            // l
+    double rho_bar = 0;                    // the radius-edge bound (+infinity: no angle test)
+    geometry::Disk disk;                   // the selection disk (radius <= 0: empty)
     const QualityTest* quality = nullptr;  // for strategies that judge neighbours
 };
 
@@ -103,7 +103,8 @@ public:
 
     // F(p) of the paper: Σ P(t) over the cavity of p (read-only search from
     // t.id).  Exposed for tests.
-    static int cavity_penalty(const PoorTriangle& t, const geometry::Point& p, PlacementScratch& scratch);
+    static int cavity_penalty(const PoorTriangle& t, const geometry::Point& p,
+                              PlacementScratch& scratch);
 
 private:
     int samples_;
@@ -114,7 +115,8 @@ const PlacementStrategy& builtin_placement(Placement kind);
 
 // Whether p is strictly inside t.disk.
 inline bool in_selection_disk(const PoorTriangle& t, const geometry::Point& p) {
-    return t.disk.radius > 0 && geometry::squared_distance(p, t.disk.centre) < t.disk.radius * t.disk.radius;
+    return t.disk.radius > 0 &&
+           geometry::squared_distance(p, t.disk.centre) < t.disk.radius * t.disk.radius;
 }
 
 // Where a strategy's point may go.  When the selection disk is not empty, in
@@ -132,6 +134,7 @@ inline bool admissible_point(const PoorTriangle& t, const geometry::Point& p) {
 
 // Fills a PoorTriangle for live triangle id (corners, circle, shortest edge,
 // selection disk).
-PoorTriangle describe_poor_triangle(const mesh::Mesh& mesh, mesh::TriangleId id, const QualityTest& quality);
+PoorTriangle describe_poor_triangle(const mesh::Mesh& mesh, mesh::TriangleId id,
+                                    const QualityTest& quality);
 
 }  // namespace gpdr::refine

@@ -27,15 +27,18 @@ QualityTest::QualityTest(const QualityCriteria& criteria, SegmentEnds segments)
     // for conforming Delaunay (segments.hpp, encroaches()); above 45 degrees
     // the lens would exceed the circle, so the circle is kept.
     if (angle_test_ && !criteria_.diametral_circles)
-        lens_ = std::max(0.0, std::cos(2.0 * criteria_.min_angle_degrees * std::numbers::pi / 180.0));
+        lens_ =
+            std::max(0.0, std::cos(2.0 * criteria_.min_angle_degrees * std::numbers::pi / 180.0));
     bool regional = false;
     for (double a : criteria_.region_max_area) regional = regional || a > 0;
     area_test_ = criteria_.max_area > 0 || regional || criteria_.triangle_max_area != nullptr;
 }
 
 TriangleMeasures QualityTest::measure(const Point& a, const Point& b, const Point& c) {
-    const double orientation = geometry::orient2d(a, b, c);  // once: the circle and the area share it
-    return {geometry::circumcircle(a, b, c, orientation), geometry::shortest_edge(a, b, c), 0.5 * orientation};
+    const double orientation =
+        geometry::orient2d(a, b, c);  // once: the circle and the area share it
+    return {geometry::circumcircle(a, b, c, orientation), geometry::shortest_edge(a, b, c),
+            0.5 * orientation};
 }
 
 Poorness QualityTest::assess(const mesh::Mesh& mesh, mesh::TriangleId t, const TriangleMeasures& m,

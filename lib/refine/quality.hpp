@@ -75,7 +75,8 @@ public:
     double encroachment_lens() const { return lens_; }
     bool has_area_test() const { return area_test_; }
 
-    static TriangleMeasures measure(const geometry::Point& a, const geometry::Point& b, const geometry::Point& c);
+    static TriangleMeasures measure(const geometry::Point& a, const geometry::Point& b,
+                                    const geometry::Point& c);
 
     // Tests 1-5 on live triangle t (measures from measure()).  The angle test
     // leaves a triangle alone when a small input angle forces its angle
@@ -94,7 +95,8 @@ public:
     }
     // Only the shape: r^2 > rho_bar^2 l^2.
     bool bad_shape(const TriangleMeasures& m) const {
-        return angle_test_ && m.circle.radius_squared > rho_bar_squared_ * m.shortest.length_squared;
+        return angle_test_ &&
+               m.circle.radius_squared > rho_bar_squared_ * m.shortest.length_squared;
     }
 
 private:

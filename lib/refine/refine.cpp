@@ -48,7 +48,8 @@ struct Walk {
 // The remembering stochastic walk of mesh/locate.cpp, except that it never
 // crosses a subsegment or leaves the mesh: when p lies beyond such an edge
 // and no other edge leads on, the walk reports that edge.
-Walk walk_to(const mesh::Mesh& mesh, TriangleId start, const Point& p, std::uint32_t& random_state) {
+Walk walk_to(const mesh::Mesh& mesh, TriangleId start, const Point& p,
+             std::uint32_t& random_state) {
     TriangleId t = start;
     int from = -1;
     for (std::uint64_t steps = 0; steps < 4ull * mesh.triangle_end() + 64; ++steps) {
@@ -99,8 +100,10 @@ Walk walk_to(const mesh::Mesh& mesh, TriangleId start, const Point& p, std::uint
 RefineRun::RefineRun(const mesh::Mesh& mesh, const RefineSettings& settings)
     : settings_(settings),
       quality_(settings_.criteria, SegmentEnds{settings_.segment_ends}),
-      strategy_(settings_.strategy != nullptr ? settings_.strategy : &builtin_placement(settings_.placement)) {
-    double min_x = std::numeric_limits<double>::infinity(), max_x = -min_x, min_y = min_x, max_y = -min_x;
+      strategy_(settings_.strategy != nullptr ? settings_.strategy
+                                              : &builtin_placement(settings_.placement)) {
+    double min_x = std::numeric_limits<double>::infinity(), max_x = -min_x, min_y = min_x,
+           max_y = -min_x;
     std::uint64_t triangles = 0;
     double expected = 0;  // triangles the area bounds alone call for
     const QualityCriteria& c = settings_.criteria;
@@ -120,7 +123,9 @@ RefineRun::RefineRun(const mesh::Mesh& mesh, const RefineSettings& settings)
         if (c.triangle_max_area != nullptr && c.triangle_max_area->get(id) > 0)
             bound = std::min(bound, c.triangle_max_area->get(id));
         if (std::isfinite(bound))
-            expected += geometry::signed_area(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2])) / bound;
+            expected +=
+                geometry::signed_area(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2])) /
+                bound;
     });
     const double diameter = triangles == 0 ? 0.0 : std::hypot(max_x - min_x, max_y - min_y);
     tiny_length_squared_ = (diameter * tiny_fraction) * (diameter * tiny_fraction);
@@ -132,8 +137,9 @@ RefineRun::RefineRun(const mesh::Mesh& mesh, const RefineSettings& settings)
     // anything, so it only gets the mesh's capacity.
     constexpr double capacity = double(mesh::max_triangles / 2 - 16);
     double limit = settings_.safety_limit > 0 ? double(settings_.safety_limit)
-                   : c.user_test != nullptr   ? capacity
-                                              : double(1u << 20) + 64.0 * (double(triangles) + expected);
+                   : c.user_test != nullptr
+                       ? capacity
+                       : double(1u << 20) + 64.0 * (double(triangles) + expected);
     safety_limit_ = static_cast<std::uint64_t>(std::min(limit, capacity));
 }
 
@@ -149,7 +155,8 @@ LeafRefiner::LeafRefiner(RefineRun& run, mesh::Pool& pool, RefineReport& report)
 
 void LeafRefiner::classify(Leaf& leaf, TriangleId t) {
     const mesh::Triangle& r = mesh_.triangle(t);
-    classify(leaf, t, QualityTest::measure(mesh_.point(r.v[0]), mesh_.point(r.v[1]), mesh_.point(r.v[2])));
+    classify(leaf, t,
+             QualityTest::measure(mesh_.point(r.v[0]), mesh_.point(r.v[1]), mesh_.point(r.v[2])));
 }
 
 void LeafRefiner::classify(Leaf& leaf, TriangleId t, const TriangleMeasures& m) {
@@ -161,28 +168,31 @@ void LeafRefiner::classify(Leaf& leaf, TriangleId t, const TriangleMeasures& m) 
     const Poorness poorness = quality_.assess(mesh_, t, m, &protected_angle);
     // Remembered for the final count (count_left): a triangle's assessment
     // depends on nothing but the triangle, so it holds until the triangle dies.
-    r.flags = static_cast<std::uint8_t>(protected_angle ? r.flags | mesh::Triangle::small_angle_bit
-                                                        : r.flags & ~mesh::Triangle::small_angle_bit);
+    r.flags =
+        static_cast<std::uint8_t>(protected_angle ? r.flags | mesh::Triangle::small_angle_bit
+                                                  : r.flags & ~mesh::Triangle::small_angle_bit);
     if (poorness != Poorness::good) {
         const QueuedTriangle q{t, r.generation, leaf.where(m.circle.centre)};
         // Poor triangles are routed by their circumcentre; the Steiner point
         // itself is checked again before it is inserted.
         if (leaf.owns(m.circle.centre))
             leaf.push_poor(q, leaf.sigma(m.circle.radius_squared),
-                           quality_.shape_rank(m.shortest.length_squared, m.circle.radius_squared, Leaf::rank_count));
+                           quality_.shape_rank(m.shortest.length_squared, m.circle.radius_squared,
+                                               Leaf::rank_count));
         else
             leaf.handed_off_triangles.push_back(q);
     }
     if ((r.flags & 7u) == 0) return;
     const Point* corner[3] = {&a, &b, &c};
     for (int k = 0; k < 3; ++k)
-        if (r.is_subsegment(k) &&
-            encroaches(*corner[mesh::next3(k)], *corner[mesh::prev3(k)], *corner[k], quality_.encroachment_lens()))
+        if (r.is_subsegment(k) && encroaches(*corner[mesh::next3(k)], *corner[mesh::prev3(k)],
+                                             *corner[k], quality_.encroachment_lens()))
             leaf.push_subsegment({EdgeRef(t, k), r.generation, false});
 }
 
 void LeafRefiner::classify_all(Leaf& leaf) {
-    mesh::for_each_triangle(mesh_, [&](TriangleId id, const mesh::Triangle&) { classify(leaf, id); });
+    mesh::for_each_triangle(mesh_,
+                            [&](TriangleId id, const mesh::Triangle&) { classify(leaf, id); });
 }
 
 void LeafRefiner::classify_created(Leaf& leaf) {
@@ -191,7 +201,8 @@ void LeafRefiner::classify_created(Leaf& leaf) {
     buffer_.tagged_gone.clear();  // (told once)
     for (TriangleId id : buffer_.created) {
         const mesh::Triangle& r = mesh_.triangle(id);
-        const TriangleMeasures m = QualityTest::measure(mesh_.point(r.v[0]), mesh_.point(r.v[1]), mesh_.point(r.v[2]));
+        const TriangleMeasures m =
+            QualityTest::measure(mesh_.point(r.v[0]), mesh_.point(r.v[1]), mesh_.point(r.v[2]));
         if (observer_ != nullptr) observer_->triangle_created(id, r.generation, m.circle);
         classify(leaf, id, m);
     }
@@ -221,7 +232,8 @@ void LeafRefiner::publish_steiner_points() {
 
 bool LeafRefiner::budget_left() {
     if (report_.stopped != RefineReport::Stop::none) return false;
-    const std::uint64_t used = run_.steiner_used.load(std::memory_order_relaxed) + unpublished_steiner_;
+    const std::uint64_t used =
+        run_.steiner_used.load(std::memory_order_relaxed) + unpublished_steiner_;
     if (settings_.steiner_limit && used >= settings_.max_steiner) {
         report_.stopped = RefineReport::Stop::steiner_limit;
         return false;
@@ -251,7 +263,8 @@ bool LeafRefiner::refine_levels(Leaf& leaf, int last_level) {
         QueuedTriangle q;
         while (leaf.pop_poor(j, q)) {
             const mesh::Triangle& r = mesh_.triangle(q.id);
-            if (r.load_generation() != q.generation || !r.live()) continue;  // stale (generation first: see Triangle)
+            if (r.load_generation() != q.generation || !r.live())
+                continue;  // stale (generation first: see Triangle)
             if (report_.stopped != RefineReport::Stop::none) {
                 leaf.push_poor(q, j);
                 return false;
@@ -267,10 +280,12 @@ void LeafRefiner::split_queued_subsegments(Leaf& leaf) {
     QueuedSubsegment s;
     while (leaf.pop_subsegment(s)) {
         const mesh::Triangle& r = mesh_.triangle(s.edge.triangle());
-        if (r.load_generation() != s.generation || !r.live()) continue;  // stale: its new triangles were classified
+        if (r.load_generation() != s.generation || !r.live())
+            continue;  // stale: its new triangles were classified
         const bool flagged = r.is_subsegment(s.edge.edge());
         if (!flagged && !r.n[s.edge.edge()].is_none()) continue;
-        if (!s.forced && !subsegment_encroached(mesh_, s.edge, quality_.encroachment_lens())) continue;
+        if (!s.forced && !subsegment_encroached(mesh_, s.edge, quality_.encroachment_lens()))
+            continue;
         if (!may_split(s.edge) || !budget_left()) continue;  // counted by the final pass
         split_subsegment(leaf, s.edge);
     }
@@ -281,7 +296,8 @@ bool LeafRefiner::split_subsegment(Leaf& leaf, EdgeRef e) {
     const Point pa = mesh_.point(a), pb = mesh_.point(b);
     const double length_squared = geometry::squared_distance(pa, pb);
     const Point p = geometry::point_on_segment(pa, pb, split_parameter(mesh_, e));
-    if (length_squared < run_.tiny_length_squared() || p == pa || p == pb) return false;  // too short
+    if (length_squared < run_.tiny_length_squared() || p == pa || p == pb)
+        return false;  // too short
     if (!leaf.owns(p)) {
         leaf.handed_off_subsegments.push_back({e, mesh_.triangle(e.triangle()).generation, true});
         return false;
@@ -289,7 +305,8 @@ bool LeafRefiner::split_subsegment(Leaf& leaf, EdgeRef e) {
     AreaBounds* bounds = settings_.criteria.triangle_max_area;
     const EdgeRef across = mesh_.neighbour(e);
     const double left_bound = bounds ? bounds->get(e.triangle()) : 0.0;
-    const double right_bound = bounds && !across.is_none() ? bounds->get(across.triangle()) : left_bound;
+    const double right_bound =
+        bounds && !across.is_none() ? bounds->get(across.triangle()) : left_bound;
 
     mesh::InsertResult result;
     try {
@@ -316,7 +333,8 @@ bool LeafRefiner::split_subsegment(Leaf& leaf, EdgeRef e) {
         for (TriangleId id : buffer_.created) {
             const mesh::Triangle& t = mesh_.triangle(id);
             const VertexId off = (t.v[0] != a && t.v[0] != b) ? t.v[0] : t.v[1];
-            bounds->set(id, geometry::orient2d(pa, pb, mesh_.point(off)) > 0 ? left_bound : right_bound);
+            bounds->set(
+                id, geometry::orient2d(pa, pb, mesh_.point(off)) > 0 ? left_bound : right_bound);
         }
     }
     classify_created(leaf);
@@ -332,7 +350,8 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q) {
     const Point p = run_.strategy().place(t, scratch_);
     if (settings_.checked && !admissible_point(t, p))
         throw Error(std::string("refine: placement strategy '") + run_.strategy().name() +
-                    "' returned a point outside the selection disk (or, where that is empty, the circumdisk)");
+                    "' returned a point outside the selection disk (or, where that is empty, the "
+                    "circumdisk)");
     if (!finite(p)) {
         give_up(q, reason_precision);
         return;
@@ -345,7 +364,8 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q) {
         const mesh::Triangle& r = mesh_.triangle(q.id);
         if (r.load_generation() == q.generation && r.live())
             leaf.push_poor(q, leaf.sigma(t.circle.radius_squared),
-                           quality_.shape_rank(t.shortest_length * t.shortest_length, t.circle.radius_squared, Leaf::rank_count));
+                           quality_.shape_rank(t.shortest_length * t.shortest_length,
+                                               t.circle.radius_squared, Leaf::rank_count));
     };
     // When a subsegment in the way belongs to another leaf (its split point
     // lies outside), t goes with it instead of back into this leaf, which
@@ -354,7 +374,8 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q) {
         const std::size_t handed = leaf.handed_off_subsegments.size();
         split_queued_subsegments(leaf);
         const mesh::Triangle& r = mesh_.triangle(q.id);
-        if (leaf.handed_off_subsegments.size() != handed && r.load_generation() == q.generation && r.live())
+        if (leaf.handed_off_subsegments.size() != handed && r.load_generation() == q.generation &&
+            r.live())
             leaf.handed_off_triangles.push_back(q);
         else
             requeue_if_alive();
@@ -402,13 +423,15 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q) {
         const mesh::Triangle& r = mesh_.triangle(id);
         for (int k = 0; k < 3; ++k) {
             nearest = std::min(nearest, geometry::squared_distance(mesh_.point(r.v[k]), p));
-            if (r.is_subsegment(k) && encroaches(mesh_.point(r.v[mesh::next3(k)]), mesh_.point(r.v[mesh::prev3(k)]),
-                                                 p, quality_.encroachment_lens()))
+            if (r.is_subsegment(k) &&
+                encroaches(mesh_.point(r.v[mesh::next3(k)]), mesh_.point(r.v[mesh::prev3(k)]), p,
+                           quality_.encroachment_lens()))
                 blocking_.push_back(EdgeRef(id, k));
         }
     }
     const bool insert = blocking_.empty() &&
-                        nearest > t.circle.radius_squared * (tiny_fraction * tiny_fraction) && budget_left();
+                        nearest > t.circle.radius_squared * (tiny_fraction * tiny_fraction) &&
+                        budget_left();
     if (!insert) mesh::abandon_cavity(mesh_, buffer_);
 
     if (!blocking_.empty()) {
@@ -431,7 +454,8 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q) {
     }
     if (!insert) {  // the budget ran out
         leaf.push_poor(q, leaf.sigma(t.circle.radius_squared),
-                           quality_.shape_rank(t.shortest_length * t.shortest_length, t.circle.radius_squared, Leaf::rank_count));
+                       quality_.shape_rank(t.shortest_length * t.shortest_length,
+                                           t.circle.radius_squared, Leaf::rank_count));
         return;
     }
 
@@ -464,9 +488,11 @@ namespace {
 // The reason of the newest give-up of triangle (id, generation) in
 // `given_up` (sorted by slot, each slot's entries in the order given), or
 // 0xFF when it was never given up.
-std::uint8_t give_up_reason(std::span<const LeafRefiner::GivenUp> given_up, TriangleId id, std::uint32_t generation) {
-    auto it = std::upper_bound(given_up.begin(), given_up.end(), mesh::index(id),
-                               [](std::uint32_t x, const auto& g) { return x < mesh::index(g.id); });
+std::uint8_t give_up_reason(std::span<const LeafRefiner::GivenUp> given_up, TriangleId id,
+                            std::uint32_t generation) {
+    auto it =
+        std::upper_bound(given_up.begin(), given_up.end(), mesh::index(id),
+                         [](std::uint32_t x, const auto& g) { return x < mesh::index(g.id); });
     while (it != given_up.begin()) {
         --it;
         if (it->id != id) break;
@@ -480,8 +506,9 @@ std::uint8_t give_up_reason(std::span<const LeafRefiner::GivenUp> given_up, Tria
 // (left_other) and what a limit left (left_budget); otherwise it reads the
 // small-angle mark classification left on each triangle, and the give-ups
 // are counted apart (count_given_up).
-void count_left_in(const mesh::Mesh& mesh, const RefineRun& run, std::span<const LeafRefiner::GivenUp> given_up,
-                   std::uint32_t first, std::uint32_t end, bool full, RefineReport& report) {
+void count_left_in(const mesh::Mesh& mesh, const RefineRun& run,
+                   std::span<const LeafRefiner::GivenUp> given_up, std::uint32_t first,
+                   std::uint32_t end, bool full, RefineReport& report) {
     const QualityTest& quality = run.quality();
     for (std::uint32_t i = first; i < end; ++i) {
         const TriangleId id{i};
@@ -493,7 +520,8 @@ void count_left_in(const mesh::Mesh& mesh, const RefineRun& run, std::span<const
             if (!t.is_subsegment(k)) continue;
             const EdgeRef across = t.n[k];
             if (!across.is_none() && mesh::index(across.triangle()) < i) continue;
-            if (subsegment_encroached(mesh, EdgeRef(id, k), quality.encroachment_lens())) ++report.encroached_left;
+            if (subsegment_encroached(mesh, EdgeRef(id, k), quality.encroachment_lens()))
+                ++report.encroached_left;
         }
         if (!full) {
             report.left_small_input_angle += t.small_angle_protected() ? 1 : 0;
@@ -520,12 +548,15 @@ void count_left_in(const mesh::Mesh& mesh, const RefineRun& run, std::span<const
 
 // Outside full counting: the give-ups whose triangles are still alive (a
 // triangle given up is poor, and stays so while it lives).
-void count_given_up(const mesh::Mesh& mesh, std::span<const LeafRefiner::GivenUp> given_up, RefineReport& report) {
+void count_given_up(const mesh::Mesh& mesh, std::span<const LeafRefiner::GivenUp> given_up,
+                    RefineReport& report) {
     for (std::size_t j = 0; j < given_up.size(); ++j) {
-        if (j + 1 < given_up.size() && given_up[j + 1].id == given_up[j].id) continue;  // once per slot
+        if (j + 1 < given_up.size() && given_up[j + 1].id == given_up[j].id)
+            continue;  // once per slot
         const mesh::Triangle& t = mesh.triangle(given_up[j].id);
         if (!t.live()) continue;
-        const std::uint8_t reason = give_up_reason(given_up.first(j + 1), given_up[j].id, t.generation);
+        const std::uint8_t reason =
+            give_up_reason(given_up.first(j + 1), given_up[j].id, t.generation);
         if (reason == reason_no_split)
             ++report.left_no_split;
         else if (reason == reason_precision)
@@ -535,10 +566,12 @@ void count_given_up(const mesh::Mesh& mesh, std::span<const LeafRefiner::GivenUp
 
 }  // namespace
 
-void count_left(const mesh::Mesh& mesh, const RefineRun& run, std::vector<LeafRefiner::GivenUp> given_up,
-                RefineReport& report, unsigned threads) {
-    std::stable_sort(given_up.begin(), given_up.end(),
-                     [](const auto& x, const auto& y) { return mesh::index(x.id) < mesh::index(y.id); });
+void count_left(const mesh::Mesh& mesh, const RefineRun& run,
+                std::vector<LeafRefiner::GivenUp> given_up, RefineReport& report,
+                unsigned threads) {
+    std::stable_sort(given_up.begin(), given_up.end(), [](const auto& x, const auto& y) {
+        return mesh::index(x.id) < mesh::index(y.id);
+    });
     // Full counting in checked mode, and when a limit stopped the run.
     const bool full = run.settings().checked || report.stopped != RefineReport::Stop::none;
     threads = std::max(1u, threads);
@@ -584,7 +617,8 @@ void refine_mesh(mesh::Mesh& mesh, const RefineSettings& settings, RefineReport&
     // The leaf must satisfy the paper's relation (9): side > 4 r_max.
     double r_max_squared = 0;
     mesh::for_each_triangle(mesh, [&](TriangleId, const mesh::Triangle& t) {
-        const double r2 = geometry::circumradius_squared(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]));
+        const double r2 = geometry::circumradius_squared(mesh.point(t.v[0]), mesh.point(t.v[1]),
+                                                         mesh.point(t.v[2]));
         if (std::isfinite(r2)) r_max_squared = std::max(r_max_squared, r2);
     });
     Leaf leaf(r_max_squared > 0 ? 4.0 * std::sqrt(r_max_squared) * (1.0 + 0x1p-20) : 1.0);

@@ -72,9 +72,9 @@ struct RefineSettings {
     // The placement: `strategy` if set (a user's), else the built-in `placement`.
     Placement placement = Placement::off_centre;
     const PlacementStrategy* strategy = nullptr;
-    int no_segment_splitting = 0;  // -Y: 1 (boundary subsegments), -YY: 2 (all)
-    bool steiner_limit = false;    // -S given
-    std::uint64_t max_steiner = 0; // -S<n>: what is left of the budget for this stage
+    int no_segment_splitting = 0;   // -Y: 1 (boundary subsegments), -YY: 2 (all)
+    bool steiner_limit = false;     // -S given
+    std::uint64_t max_steiner = 0;  // -S<n>: what is left of the budget for this stage
     // Safety net against non-termination (angle bounds above ~34°): at most
     // this many Steiner points; 0 derives it from the input (see refine.cpp).
     std::uint64_t safety_limit = 0;
@@ -110,8 +110,8 @@ struct NewVertex {
 struct RefineReport {
     enum class Stop : std::uint8_t { none, steiner_limit, safety_limit };
 
-    std::uint64_t steiner_points = 0;   // all vertices added
-    std::uint64_t segment_splits = 0;   // of those, on subsegments
+    std::uint64_t steiner_points = 0;  // all vertices added
+    std::uint64_t segment_splits = 0;  // of those, on subsegments
     std::uint64_t triangles_created = 0;
     Stop stopped = Stop::none;
 
@@ -119,10 +119,10 @@ struct RefineReport {
     // pass), by reason.  A triangle given up for several reasons is counted
     // under the last.
     std::uint64_t left_small_input_angle = 0;  // the small-angle rule protects it
-    std::uint64_t left_no_split = 0;    // its point would split a subsegment -Y/-YY protects
-    std::uint64_t left_precision = 0;   // too small for double precision, or no progress
-    std::uint64_t left_budget = 0;      // still queued when -S or the safety limit stopped it
-    std::uint64_t left_other = 0;       // poor for no recorded reason (a bug if non-zero)
+    std::uint64_t left_no_split = 0;           // its point would split a subsegment -Y/-YY protects
+    std::uint64_t left_precision = 0;          // too small for double precision, or no progress
+    std::uint64_t left_budget = 0;  // still queued when -S or the safety limit stopped it
+    std::uint64_t left_other = 0;   // poor for no recorded reason (a bug if non-zero)
     // Encroached subsegments left unsplit (-Y/-YY, budget, too short).
     std::uint64_t encroached_left = 0;
 
@@ -208,7 +208,9 @@ private:
     bool budget_left();
     void count_steiner_point();
     void classify_created(Leaf& leaf);
-    void give_up(QueuedTriangle q, std::uint8_t reason) { given_up_.push_back({q.id, q.generation, reason}); }
+    void give_up(QueuedTriangle q, std::uint8_t reason) {
+        given_up_.push_back({q.id, q.generation, reason});
+    }
 
     RefineRun& run_;
     const RefineSettings& settings_;
@@ -232,8 +234,9 @@ private:
 // poor for no reason: left_other); otherwise it reads the small-angle mark
 // classification left on each triangle and counts the give-ups whose
 // triangles still live, about a tenth of a one-thread refinement less.
-void count_left(const mesh::Mesh& mesh, const RefineRun& run, std::vector<LeafRefiner::GivenUp> given_up,
-                RefineReport& report, unsigned threads = 1);
+void count_left(const mesh::Mesh& mesh, const RefineRun& run,
+                std::vector<LeafRefiner::GivenUp> given_up, RefineReport& report,
+                unsigned threads = 1);
 
 // The sequential refiner: one leaf that never splits, on the calling thread.
 // Requires a constrained Delaunay mesh without ghosts whose boundary edges

@@ -51,7 +51,8 @@ double split_parameter(const mesh::Mesh& mesh, EdgeRef e) {
     // between 0.35 and 0.71 of the length from the acute corner.
     const double d = std::exp2(std::round(std::log2(0.5 * length)));
     double t = d / length;
-    if (!(t > 0.25 && t < 0.75)) t = 0.5;  // not finite, or far off (cannot happen for finite lengths)
+    if (!(t > 0.25 && t < 0.75))
+        t = 0.5;  // not finite, or far off (cannot happen for finite lengths)
     return acute_a ? t : 1.0 - t;
 }
 
@@ -72,7 +73,8 @@ EdgeRef subsegment_at(const mesh::Mesh& mesh, mesh::TriangleId t, VertexId u) {
 // The subsegment at x that continues u -> x most nearly straight (split
 // points are rounded, so not exactly collinear): its far end, or no_vertex
 // when none turns by less than about 8 degrees.  `t` has corner x.
-VertexId continuation(const mesh::Mesh& mesh, mesh::TriangleId t, VertexId u, VertexId x, EdgeRef& edge) {
+VertexId continuation(const mesh::Mesh& mesh, mesh::TriangleId t, VertexId u, VertexId x,
+                      EdgeRef& edge) {
     const Point& pu = mesh.point(u);
     const Point& px = mesh.point(x);
     const double dx = px.x - pu.x, dy = px.y - pu.y;
@@ -140,16 +142,19 @@ bool walk_segment_ends(const mesh::Mesh& mesh, EdgeRef e, std::array<VertexId, 2
     return true;
 }
 
-bool small_angle_protected(const mesh::Mesh& mesh, mesh::TriangleId t, int k, const SegmentEnds& segments) {
+bool small_angle_protected(const mesh::Mesh& mesh, mesh::TriangleId t, int k,
+                           const SegmentEnds& segments) {
     const mesh::Triangle& r = mesh.triangle(t);
     const VertexId u = r.v[mesh::next3(k)];
     const VertexId w = r.v[mesh::prev3(k)];
     if (mesh.kind(u) != VertexKind::segment || mesh.kind(w) != VertexKind::segment) return false;
     std::array<VertexId, 2> su{}, sw{};
-    if (!segment_of(mesh, t, u, segments, su) || !segment_of(mesh, t, w, segments, sw)) return false;
+    if (!segment_of(mesh, t, u, segments, su) || !segment_of(mesh, t, w, segments, sw))
+        return false;
     for (int i = 0; i < 2; ++i) {
         for (int j = 0; j < 2; ++j) {
-            if (su[i] != sw[j] || su[1 - i] == sw[1 - j]) continue;  // no shared end, or the same segment
+            if (su[i] != sw[j] || su[1 - i] == sw[1 - j])
+                continue;  // no shared end, or the same segment
             const Point& o = mesh.point(su[i]);
             const double du = geometry::squared_distance(o, mesh.point(u));
             const double dw = geometry::squared_distance(o, mesh.point(w));

@@ -113,10 +113,12 @@ struct SegmentEnds {
 // most 256 steps each way); false when a walk is longer or breaks.  The
 // walk may go anywhere along the segment: the parallel layer calls it before
 // its workers start, never while they run (parallel/segment_labels.hpp).
-bool walk_segment_ends(const mesh::Mesh& mesh, mesh::EdgeRef e, std::array<mesh::VertexId, 2>& ends);
+bool walk_segment_ends(const mesh::Mesh& mesh, mesh::EdgeRef e,
+                       std::array<mesh::VertexId, 2>& ends);
 
 // The small-input-angle rule above for triangle t whose shortest edge is
 // edge k.
-bool small_angle_protected(const mesh::Mesh& mesh, mesh::TriangleId t, int k, const SegmentEnds& segments);
+bool small_angle_protected(const mesh::Mesh& mesh, mesh::TriangleId t, int k,
+                           const SegmentEnds& segments);
 
 }  // namespace gpdr::refine

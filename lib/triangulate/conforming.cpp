@@ -134,10 +134,12 @@ std::optional<Point> split_point(const Mesh& mesh, EdgeRef e) {
     const double length_squared = geometry::squared_distance(x, y);
     auto on_line = [&](VertexId v) {
         const Point& w = mesh.point(v);
-        return diametral(x, y, w) >= 0 && std::abs(geometry::orient2d(x, y, w)) < 1e-12 * length_squared;
+        return diametral(x, y, w) >= 0 &&
+               std::abs(geometry::orient2d(x, y, w)) < 1e-12 * length_squared;
     };
     const EdgeRef across = mesh.neighbour(e);
-    if (on_line(mesh.apex(e)) || (!across.is_none() && on_line(mesh.apex(across)))) return std::nullopt;
+    if (on_line(mesh.apex(e)) || (!across.is_none() && on_line(mesh.apex(across))))
+        return std::nullopt;
     const Point p = geometry::point_on_segment(x, y, split_parameter(mesh, e));
     if (p != x && p != y && placeable(mesh, e, p)) return p;
     const Point middle = geometry::point_on_segment(x, y, 0.5);
@@ -177,7 +179,8 @@ void make_conforming(Pool& pool, const ConformingOptions& options, ConformingRep
     std::size_t head = 0;
     auto consider = [&](EdgeRef e) {
         const Triangle& t = mesh.triangle(e.triangle());
-        if (t.is_subsegment(e.edge()) && encroached(mesh, e)) queue.push_back(Entry{e, t.generation});
+        if (t.is_subsegment(e.edge()) && encroached(mesh, e))
+            queue.push_back(Entry{e, t.generation});
     };
     for_each_edge(mesh, [&](const EdgeView& v) {
         if (v.subsegment) consider(v.edge);
@@ -193,10 +196,12 @@ void make_conforming(Pool& pool, const ConformingOptions& options, ConformingRep
         // Stale entries: the triangle died (its subsegment, if it survived,
         // was queued again from the new triangle) or the edge was split.
         const Triangle& t = mesh.triangle(entry.edge.triangle());
-        if (!t.live() || t.generation != entry.generation || !t.is_subsegment(entry.edge.edge())) continue;
+        if (!t.live() || t.generation != entry.generation || !t.is_subsegment(entry.edge.edge()))
+            continue;
         if (!encroached(mesh, entry.edge)) continue;
         const bool boundary = t.n[entry.edge.edge()].is_none();
-        if (options.no_segment_splitting >= 2 || (options.no_segment_splitting == 1 && boundary)) continue;
+        if (options.no_segment_splitting >= 2 || (options.no_segment_splitting == 1 && boundary))
+            continue;
         if (options.steiner_limit && report.points_added >= options.max_steiner) {
             report.stopped = ConformingReport::Stop::steiner_limit;
             break;

@@ -62,7 +62,8 @@ struct ConformingOptions {
 
 // The settings of a Triangle-style command line; `steiner_used` is what the
 // earlier stages already spent of the -S budget.
-inline ConformingOptions conforming_options(const Options& options, std::uint64_t steiner_used = 0) {
+inline ConformingOptions conforming_options(const Options& options,
+                                            std::uint64_t steiner_used = 0) {
     ConformingOptions o;
     o.no_segment_splitting = options.no_segment_splitting;
     o.steiner_limit = options.steiner_limit;

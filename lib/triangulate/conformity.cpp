@@ -45,8 +45,8 @@ void star(const Mesh& mesh, TriangleId t0, VertexId v, std::vector<TriangleId>& 
 
 }  // namespace
 
-std::vector<std::string> check_conformity(const Mesh& mesh, const Pslg& pslg, const CdtReport& report,
-                                          std::size_t max_problems) {
+std::vector<std::string> check_conformity(const Mesh& mesh, const Pslg& pslg,
+                                          const CdtReport& report, std::size_t max_problems) {
     std::vector<std::string> problems;
     std::size_t dropped = 0;
     auto add = [&](std::string s) {
@@ -131,7 +131,8 @@ std::vector<std::string> check_conformity(const Mesh& mesh, const Pslg& pslg, co
                         // So may one joined to v by a subsegment recorded as
                         // a piece of this segment: refinement's split points
                         // are rounded too.
-                        const SubsegmentInfo* info = t.is_subsegment(k) ? mesh.subsegments().find(v, w) : nullptr;
+                        const SubsegmentInfo* info =
+                            t.is_subsegment(k) ? mesh.subsegments().find(v, w) : nullptr;
                         const bool is_listed =
                             (info && info->segment == s) ||
                             std::find(listed[s].begin(), listed[s].end(), w) != listed[s].end();
@@ -146,7 +147,8 @@ std::vector<std::string> check_conformity(const Mesh& mesh, const Pslg& pslg, co
                                         (mesh.kind(w) == VertexKind::segment &&
                                          std::abs(o) <= 1e-9 * length_squared);
                         if (!t.is_subsegment(k) || !on || visited[index(w)]) continue;
-                        if (w != b && !is_listed && along(pw, pb, pa, pb) <= 0) continue;  // past the end
+                        if (w != b && !is_listed && along(pw, pb, pa, pb) <= 0)
+                            continue;  // past the end
                         stack.push_back(w);
                         moved = true;
                     }
@@ -182,8 +184,8 @@ std::vector<std::string> check_conformity(const Mesh& mesh, const Pslg& pslg, co
         }
         for (VertexId v : touched) visited[index(v)] = 0;
         if (!reached)
-            add(fmt::format("segment {} ({}-{}): no subsegment leaves vertex {} along it", s, index(a), index(b),
-                            index(stuck == no_vertex ? a : stuck)));
+            add(fmt::format("segment {} ({}-{}): no subsegment leaves vertex {} along it", s,
+                            index(a), index(b), index(stuck == no_vertex ? a : stuck)));
     }
     if (dropped > 0) problems.push_back(fmt::format("... and {} more problems", dropped));
     return problems;

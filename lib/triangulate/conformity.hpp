@@ -26,7 +26,7 @@ namespace gpdr::triangulate {
 // Problems found, each a sentence naming the segment and vertices; empty
 // when the mesh conforms.  `report` is the one the CDT filled (skipped
 // segments, duplicate vertices).
-std::vector<std::string> check_conformity(const mesh::Mesh& mesh, const Pslg& pslg, const CdtReport& report,
-                                          std::size_t max_problems = 100);
+std::vector<std::string> check_conformity(const mesh::Mesh& mesh, const Pslg& pslg,
+                                          const CdtReport& report, std::size_t max_problems = 100);
 
 }  // namespace gpdr::triangulate

@@ -33,7 +33,8 @@ void note_corners(const Mesh& mesh, SegmentBuffer& buf, TriangleId t) {
     if (!buf.track_corners) return;
     for (VertexId v : mesh.triangle(t).v) {
         const std::size_t i = index(v);
-        if (i >= buf.corner.size()) buf.corner.resize(std::max(i + 1, buf.corner.size() * 3 / 2), no_triangle);
+        if (i >= buf.corner.size())
+            buf.corner.resize(std::max(i + 1, buf.corner.size() * 3 / 2), no_triangle);
         buf.corner[i] = t;
     }
 }
@@ -46,7 +47,8 @@ bool has_corner(const Mesh& mesh, TriangleId t, VertexId v) {
 // A live triangle with corner v: from the corner map, else located from the
 // hint (or from the first live triangle).
 TriangleId find_start(const Mesh& mesh, VertexId v, TriangleId hint, SegmentBuffer& buf) {
-    if (buf.track_corners && index(v) < buf.corner.size() && has_corner(mesh, buf.corner[index(v)], v))
+    if (buf.track_corners && index(v) < buf.corner.size() &&
+        has_corner(mesh, buf.corner[index(v)], v))
         return buf.corner[index(v)];
     if (has_corner(mesh, hint, v)) return hint;
     if (hint == no_triangle || index(hint) >= mesh.triangle_end() || !mesh.triangle(hint).live()) {
@@ -102,7 +104,8 @@ Step find_wedge(const Mesh& mesh, TriangleId t0, VertexId a, VertexId b) {
             if (t == t0) break;
         }
     }
-    throw Error("segment " + vertex_name(a) + "-" + vertex_name(b) + " leaves the triangulated region");
+    throw Error("segment " + vertex_name(a) + "-" + vertex_name(b) +
+                " leaves the triangulated region");
 }
 
 // Flags edge e (between u and v) on both sides and records its entry.
@@ -126,12 +129,14 @@ void make_subsegment(Mesh& mesh, EdgeRef e, VertexId u, VertexId v, const Subseg
 // the strip, are dropped; if x-y was a subsegment, it is recovered after
 // the strip is retriangulated and y is back.
 void append(const Mesh& mesh, std::vector<VertexId>& chain, std::vector<EdgeRef>& outer,
-            std::vector<std::uint8_t>& flag, VertexId v, EdgeRef out, bool subsegment, SegmentBuffer& buf) {
+            std::vector<std::uint8_t>& flag, VertexId v, EdgeRef out, bool subsegment,
+            SegmentBuffer& buf) {
     if (chain.size() >= 2 && chain[chain.size() - 2] == v) {
         // A subsegment x-y hanging into the strip is inserted again later.
         if (flag.back()) {
             SubsegmentInfo info;
-            if (const SubsegmentInfo* found = mesh.subsegments().find(v, chain.back())) info = *found;
+            if (const SubsegmentInfo* found = mesh.subsegments().find(v, chain.back()))
+                info = *found;
             buf.pending.push_back({v, chain.back(), info});
         }
         buf.inner.push_back(chain.back());
@@ -146,9 +151,9 @@ void append(const Mesh& mesh, std::vector<VertexId>& chain, std::vector<EdgeRef>
 }
 
 struct Walk {
-    bool blocked;    // a subsegment crosses: `edge` is it
+    bool blocked;  // a subsegment crosses: `edge` is it
     EdgeRef edge;
-    VertexId end;    // otherwise: the vertex the crossed strip ends at
+    VertexId end;  // otherwise: the vertex the crossed strip ends at
 };
 
 // From the crossing edge e of a's triangle, collects the crossed triangles
@@ -170,10 +175,10 @@ Walk walk(const Mesh& mesh, VertexId a, VertexId b, EdgeRef e, SegmentBuffer& bu
         const int i = e.edge();
         buf.left.push_back(a);
         buf.right.push_back(a);
-        append(mesh, buf.left, buf.left_outer, buf.left_flag, r.v[prev3(i)], r.n[next3(i)], r.is_subsegment(next3(i)),
-               buf);
-        append(mesh, buf.right, buf.right_outer, buf.right_flag, r.v[next3(i)], r.n[prev3(i)], r.is_subsegment(prev3(i)),
-               buf);
+        append(mesh, buf.left, buf.left_outer, buf.left_flag, r.v[prev3(i)], r.n[next3(i)],
+               r.is_subsegment(next3(i)), buf);
+        append(mesh, buf.right, buf.right_outer, buf.right_flag, r.v[next3(i)], r.n[prev3(i)],
+               r.is_subsegment(prev3(i)), buf);
         buf.crossed.push_back(e.triangle());
     }
     for (;;) {
@@ -181,18 +186,19 @@ Walk walk(const Mesh& mesh, VertexId a, VertexId b, EdgeRef e, SegmentBuffer& bu
         if (r.is_subsegment(e.edge())) return {true, e, no_vertex};
         const EdgeRef n = r.n[e.edge()];
         if (n.is_none())
-            throw Error("segment " + vertex_name(a) + "-" + vertex_name(b) + " leaves the triangulated region");
+            throw Error("segment " + vertex_name(a) + "-" + vertex_name(b) +
+                        " leaves the triangulated region");
         const Triangle& u = mesh.triangle(n.triangle());
         const int j = n.edge();
         const VertexId apex = u.v[j];
         buf.crossed.push_back(n.triangle());
         const double o = apex == b ? 0.0 : orient2d(pa, pb, mesh.point(apex));
         if (o >= 0)
-            append(mesh, buf.left, buf.left_outer, buf.left_flag, apex, u.n[prev3(j)], u.is_subsegment(prev3(j)),
-                   buf);
+            append(mesh, buf.left, buf.left_outer, buf.left_flag, apex, u.n[prev3(j)],
+                   u.is_subsegment(prev3(j)), buf);
         if (o <= 0)
-            append(mesh, buf.right, buf.right_outer, buf.right_flag, apex, u.n[next3(j)], u.is_subsegment(next3(j)),
-                   buf);
+            append(mesh, buf.right, buf.right_outer, buf.right_flag, apex, u.n[next3(j)],
+                   u.is_subsegment(next3(j)), buf);
         if (o == 0) return {false, EdgeRef::none(), apex};
         e = EdgeRef(n.triangle(), o > 0 ? next3(j) : prev3(j));
     }
@@ -203,7 +209,8 @@ Walk walk(const Mesh& mesh, VertexId a, VertexId b, EdgeRef e, SegmentBuffer& bu
 // chain[0] -> chain[last] of its top triangle.  outer[k] / flag[k]: the
 // outside of chain edge k (chain[k] - chain[k+1]).
 EdgeRef build(Pool& pool, SegmentBuffer& buf, const std::vector<VertexId>& chain,
-              const std::vector<EdgeRef>& outer, const std::vector<std::uint8_t>& flag, std::uint16_t region) {
+              const std::vector<EdgeRef>& outer, const std::vector<std::uint8_t>& flag,
+              std::uint16_t region) {
     Mesh& mesh = pool.mesh();
     auto& tasks = buf.tasks;
     tasks.clear();
@@ -237,7 +244,8 @@ EdgeRef build(Pool& pool, SegmentBuffer& buf, const std::vector<VertexId>& chain
 
 // Replaces the crossed strip by the constrained Delaunay triangulation of its
 // two sides with a-end as a subsegment.  Returns a triangle with corner end.
-TriangleId retriangulate(Pool& pool, VertexId a, VertexId end, const SubsegmentInfo& info, SegmentBuffer& buf) {
+TriangleId retriangulate(Pool& pool, VertexId a, VertexId end, const SubsegmentInfo& info,
+                         SegmentBuffer& buf) {
     Mesh& mesh = pool.mesh();
     const std::uint16_t region = mesh.triangle(buf.crossed.front()).region;
     for (TriangleId t : buf.crossed) pool.destroy(t);
@@ -287,8 +295,8 @@ bool arrived(std::vector<VertexId>& targets, VertexId v) {
 // The loop of insert_segment for one piece a-b, starting from triangle t
 // (corner a); `record` says whether events are reported.  Returns a triangle
 // with corner b.
-TriangleId insert_piece(Pool& pool, VertexId a, VertexId b, const SubsegmentInfo& info, TriangleId t,
-                        SegmentBuffer& buf, bool record) {
+TriangleId insert_piece(Pool& pool, VertexId a, VertexId b, const SubsegmentInfo& info,
+                        TriangleId t, SegmentBuffer& buf, bool record) {
     Mesh& mesh = pool.mesh();
     auto& targets = buf.targets;
     targets.clear();
@@ -302,8 +310,8 @@ TriangleId insert_piece(Pool& pool, VertexId a, VertexId b, const SubsegmentInfo
     std::uint64_t steps_left = 8ull * mesh.vertex_end() + 1024;
     while (!targets.empty()) {
         if (--steps_left == 0)
-            throw Error("segment insertion from vertex " + vertex_name(a) + " to " + vertex_name(b) +
-                        " does not terminate");
+            throw Error("segment insertion from vertex " + vertex_name(a) + " to " +
+                        vertex_name(b) + " does not terminate");
         const VertexId target = targets.back();
         const Step step = find_wedge(mesh, t, current, target);
         if (step.kind != Step::Kind::cross) {
@@ -311,7 +319,8 @@ TriangleId insert_piece(Pool& pool, VertexId a, VertexId b, const SubsegmentInfo
             if (step.kind == Step::Kind::edge)
                 targets.pop_back();
             else if (!arrived(targets, step.vertex) && record)
-                buf.events.push_back({SegmentEvent::Kind::through_vertex, step.vertex, {}, {}, {}, info.segment});
+                buf.events.push_back(
+                    {SegmentEvent::Kind::through_vertex, step.vertex, {}, {}, {}, info.segment});
             t = step.edge.triangle();
             current = step.vertex;
             buf.path.push_back(current);
@@ -324,10 +333,12 @@ TriangleId insert_piece(Pool& pool, VertexId a, VertexId b, const SubsegmentInfo
             const VertexId x = mesh.origin(w.edge), y = mesh.destination(w.edge);
             SubsegmentInfo crossed;
             if (const SubsegmentInfo* found = mesh.subsegments().find(x, y)) crossed = *found;
-            const Point p = geometry::segment_intersection(mesh.point(current), mesh.point(target), mesh.point(x),
-                                                           mesh.point(y));
-            const double near = 1e-24 * std::max(geometry::squared_distance(mesh.point(x), mesh.point(y)),
-                                                 geometry::squared_distance(mesh.point(current), mesh.point(target)));
+            const Point p = geometry::segment_intersection(mesh.point(current), mesh.point(target),
+                                                           mesh.point(x), mesh.point(y));
+            const double near =
+                1e-24 *
+                std::max(geometry::squared_distance(mesh.point(x), mesh.point(y)),
+                         geometry::squared_distance(mesh.point(current), mesh.point(target)));
             const double dx = geometry::squared_distance(p, mesh.point(x));
             const double dy = geometry::squared_distance(p, mesh.point(y));
             if (!can_split_at(mesh, w.edge, p) || std::min(dx, dy) <= near) {
@@ -355,7 +366,8 @@ TriangleId insert_piece(Pool& pool, VertexId a, VertexId b, const SubsegmentInfo
                 // this segment, and the walk goes on as if x-y were absent.
                 mesh.triangle(w.edge.triangle()).set_subsegment(w.edge.edge(), false);
                 const EdgeRef twin = mesh.neighbour(w.edge);
-                if (!twin.is_none()) mesh.triangle(twin.triangle()).set_subsegment(twin.edge(), false);
+                if (!twin.is_none())
+                    mesh.triangle(twin.triangle()).set_subsegment(twin.edge(), false);
                 mesh.subsegments().erase(x, y);
                 // Without the constraint x-y the mesh may not be constrained
                 // Delaunay there any more; the strip retriangulation needs it.
@@ -368,7 +380,8 @@ TriangleId insert_piece(Pool& pool, VertexId a, VertexId b, const SubsegmentInfo
                 buf.pending.push_back({x, v, crossed});
                 buf.pending.push_back({v, y, crossed});
                 if (record)
-                    buf.events.push_back({SegmentEvent::Kind::through_vertex, v, x, y, crossed, crossed.segment});
+                    buf.events.push_back(
+                        {SegmentEvent::Kind::through_vertex, v, x, y, crossed, crossed.segment});
                 split_at = v;
                 break;
             }
@@ -376,16 +389,20 @@ TriangleId insert_piece(Pool& pool, VertexId a, VertexId b, const SubsegmentInfo
                 split_at = no_vertex;
                 continue;
             }
-            const InsertResult r = split_subsegment(pool, w.edge, p, VertexKind::segment, buf.insert);
+            const InsertResult r =
+                split_subsegment(pool, w.edge, p, VertexKind::segment, buf.insert);
             for (TriangleId c : buf.insert.created) note_corners(mesh, buf, c);
-            if (record) buf.events.push_back({SegmentEvent::Kind::crossing, r.vertex, x, y, crossed, info.segment});
+            if (record)
+                buf.events.push_back(
+                    {SegmentEvent::Kind::crossing, r.vertex, x, y, crossed, info.segment});
             targets.push_back(r.vertex);
             t = find_start(mesh, current, buf.insert.created.front(), buf);
             continue;
         }
         t = retriangulate(pool, current, w.end, info, buf);
         if (!arrived(targets, w.end) && record)
-            buf.events.push_back({SegmentEvent::Kind::through_vertex, w.end, {}, {}, {}, info.segment});
+            buf.events.push_back(
+                {SegmentEvent::Kind::through_vertex, w.end, {}, {}, {}, info.segment});
         current = w.end;
         buf.path.push_back(current);
     }
@@ -405,17 +422,18 @@ TriangleId insert_segment(Pool& pool, VertexId a, VertexId b, SubsegmentInfo inf
     while (!buf.pending.empty()) {
         const SegmentBuffer::Pending piece = buf.pending.back();
         buf.pending.pop_back();
-        t = insert_piece(pool, piece.from, piece.to, piece.info, find_start(mesh, piece.from, t, buf), buf, false);
+        t = insert_piece(pool, piece.from, piece.to, piece.info,
+                         find_start(mesh, piece.from, t, buf), buf, false);
     }
     return find_start(mesh, b, t, buf);
 }
-
 
 mesh::Mesh triangulate_segments(const Pslg& pslg, CdtReport& report) {
     report = CdtReport{};
     const std::size_t n = pslg.points.size();
     const std::size_t segments = pslg.segment_count();
-    if (pslg.segments.size() % 2 != 0) throw GeometryError("segment list has an odd number of endpoints");
+    if (pslg.segments.size() % 2 != 0)
+        throw GeometryError("segment list has an odd number of endpoints");
     if (!pslg.segment_markers.empty() && pslg.segment_markers.size() != segments)
         throw GeometryError("there are " + std::to_string(segments) + " segments but " +
                             std::to_string(pslg.segment_markers.size()) + " segment markers");
@@ -423,8 +441,8 @@ mesh::Mesh triangulate_segments(const Pslg& pslg, CdtReport& report) {
         for (int k = 0; k < 2; ++k)
             if (pslg.segments[2 * s + k] >= n)
                 throw GeometryError("segment " + std::to_string(s) + " names vertex " +
-                                    std::to_string(pslg.segments[2 * s + k]) + " but there are only " +
-                                    std::to_string(n) + " vertices");
+                                    std::to_string(pslg.segments[2 * s + k]) +
+                                    " but there are only " + std::to_string(n) + " vertices");
 
     DelaunayReport dr;
     Mesh mesh = delaunay(pslg.points, dr);
@@ -476,7 +494,8 @@ mesh::Mesh triangulate_segments(const Pslg& pslg, CdtReport& report) {
         for (std::uint32_t s = 0; s < segments; ++s) {
             if (report.skipped[s]) continue;
             const SubsegmentInfo info{pslg.marker(s), s};
-            hint = insert_segment(pool, VertexId{end_of(s, 0)}, VertexId{end_of(s, 1)}, info, hint, buf);
+            hint = insert_segment(pool, VertexId{end_of(s, 0)}, VertexId{end_of(s, 1)}, info, hint,
+                                  buf);
             for (const SegmentEvent& e : buf.events) {
                 if (e.kind == SegmentEvent::Kind::through_vertex) {
                     report.segments_through_vertices.emplace_back(

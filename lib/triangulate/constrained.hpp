@@ -101,8 +101,9 @@ void track_corners(const mesh::Mesh& mesh, SegmentBuffer& buffer);
 // created at crossings are VertexKind::segment.  Throws gpdr::Error when the
 // segment leaves the triangulated region (a non-convex mesh) or a vertex is
 // not in the triangulation.
-mesh::TriangleId insert_segment(mesh::Pool& pool, mesh::VertexId a, mesh::VertexId b, mesh::SubsegmentInfo info,
-                                mesh::TriangleId hint, SegmentBuffer& buffer);
+mesh::TriangleId insert_segment(mesh::Pool& pool, mesh::VertexId a, mesh::VertexId b,
+                                mesh::SubsegmentInfo info, mesh::TriangleId hint,
+                                SegmentBuffer& buffer);
 
 // The CDT of the convex hull of the points with every segment inserted;
 // nothing removed (no holes, no exterior, no regions).  Vertex ids equal

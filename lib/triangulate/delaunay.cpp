@@ -27,7 +27,9 @@ namespace {
 
 std::size_t count_distinct(std::span<const Point> points) {
     std::vector<Point> copy(points.begin(), points.end());
-    auto less = [](const Point& a, const Point& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); };
+    auto less = [](const Point& a, const Point& b) {
+        return a.x < b.x || (a.x == b.x && a.y < b.y);
+    };
     std::sort(copy.begin(), copy.end(), less);
     return static_cast<std::size_t>(std::unique(copy.begin(), copy.end()) - copy.begin());
 }
@@ -57,7 +59,9 @@ void rename_vertex(Mesh& mesh, TriangleId t, VertexId from, VertexId to) {
     const TriangleId first = t;
     do {
         Triangle& r = mesh.triangle(t);
-        const int i = r.v[0] == from ? 0 : r.v[1] == from ? 1 : 2;  // `from` is a corner of the star
+        const int i = r.v[0] == from   ? 0
+                      : r.v[1] == from ? 1
+                                       : 2;  // `from` is a corner of the star
         r.v[i] = to;
         t = r.n[prev3(i)].triangle();
     } while (t != first);
@@ -83,8 +87,10 @@ mesh::Mesh delaunay(std::span<const Point> points, DelaunayReport& report) {
     const std::size_t n = points.size();
     for (std::size_t i = 0; i < n; ++i)
         if (!std::isfinite(points[i].x) || !std::isfinite(points[i].y))
-            throw GeometryError("vertex " + std::to_string(i) + " has a coordinate that is not a finite number");
-    if (n >= index(ghost_vertex)) throw GeometryError("too many vertices (" + std::to_string(n) + ")");
+            throw GeometryError("vertex " + std::to_string(i) +
+                                " has a coordinate that is not a finite number");
+    if (n >= index(ghost_vertex))
+        throw GeometryError("too many vertices (" + std::to_string(n) + ")");
 
     const std::vector<std::uint32_t> order = brio_order(points);
 
@@ -119,7 +125,8 @@ mesh::Mesh delaunay(std::span<const Point> points, DelaunayReport& report) {
         mesh.set_point(v, points[order[i]]);
         mesh.set_kind(v, VertexKind::input);
     }
-    std::unordered_map<std::uint32_t, std::uint32_t> kept_by;  // duplicate -> the vertex it lost to (input ids)
+    std::unordered_map<std::uint32_t, std::uint32_t>
+        kept_by;  // duplicate -> the vertex it lost to (input ids)
     {
         Pool pool(mesh);
         VertexId a{0}, b{static_cast<std::uint32_t>(ib)}, c{static_cast<std::uint32_t>(ic)};
@@ -155,14 +162,16 @@ mesh::Mesh delaunay(std::span<const Point> points, DelaunayReport& report) {
             if (!r.live()) continue;
             for (VertexId& v : r.v) v = VertexId{order[index(v)]};
         }
-        for (std::size_t i = 0; i < n; ++i) mesh.set_point(VertexId{static_cast<std::uint32_t>(i)}, points[i]);
+        for (std::size_t i = 0; i < n; ++i)
+            mesh.set_point(VertexId{static_cast<std::uint32_t>(i)}, points[i]);
         for (auto [lost, kept] : kept_by) mesh.set_kind(VertexId{lost}, VertexKind::duplicate);
     }
 
     report.duplicates.reserve(kept_by.size());
     for (auto [lost, kept] : kept_by) {
         // A kept vertex may itself have lost later to a lower index.
-        for (auto it = kept_by.find(kept); it != kept_by.end(); it = kept_by.find(kept)) kept = it->second;
+        for (auto it = kept_by.find(kept); it != kept_by.end(); it = kept_by.find(kept))
+            kept = it->second;
         report.duplicates.emplace_back(lost, kept);
     }
     std::sort(report.duplicates.begin(), report.duplicates.end());

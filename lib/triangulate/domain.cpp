@@ -29,10 +29,12 @@ TriangleId first_live(const Mesh& mesh) {
 
 // The triangle holding p strictly inside or on a non-subsegment edge, or
 // no_triangle (outside, on a vertex, on a subsegment).
-TriangleId seed_at(const Mesh& mesh, const geometry::Point& p, TriangleId hint, std::uint32_t& random_state) {
+TriangleId seed_at(const Mesh& mesh, const geometry::Point& p, TriangleId hint,
+                   std::uint32_t& random_state) {
     const LocateResult r = locate(mesh, p, hint, random_state);
     if (r.where == Location::inside) return r.triangle;
-    if (r.where == Location::on_edge && !mesh.triangle(r.triangle).is_subsegment(r.index)) return r.triangle;
+    if (r.where == Location::on_edge && !mesh.triangle(r.triangle).is_subsegment(r.index))
+        return r.triangle;
     return no_triangle;
 }
 
@@ -61,7 +63,8 @@ void spread(Mesh& mesh, TriangleId seed, std::vector<TriangleId>& out) {
 
 void carve_domain(Mesh& mesh, const Pslg& pslg, const CdtOptions& options) {
     if (pslg.regions.size() > 65534)
-        throw GeometryError("too many regions (" + std::to_string(pslg.regions.size()) + "; at most 65534)");
+        throw GeometryError("too many regions (" + std::to_string(pslg.regions.size()) +
+                            "; at most 65534)");
     const TriangleId any = first_live(mesh);
     if (any == no_triangle) return;
     std::uint32_t random_state = 0x9E3779B9u;
@@ -70,7 +73,8 @@ void carve_domain(Mesh& mesh, const Pslg& pslg, const CdtOptions& options) {
     std::vector<TriangleId> hole_seeds, region_seeds;
     if (!options.ignore_holes)
         for (const auto& h : pslg.holes) hole_seeds.push_back(seed_at(mesh, h, any, random_state));
-    for (const Region& r : pslg.regions) region_seeds.push_back(seed_at(mesh, {r.x, r.y}, any, random_state));
+    for (const Region& r : pslg.regions)
+        region_seeds.push_back(seed_at(mesh, {r.x, r.y}, any, random_state));
 
     const std::uint32_t end = mesh.triangle_end();
     if (options.convex_hull) {
@@ -80,7 +84,8 @@ void carve_domain(Mesh& mesh, const Pslg& pslg, const CdtOptions& options) {
             for (int k = 0; k < 3; ++k) {
                 if (!t.n[k].is_none() || t.is_subsegment(k)) continue;
                 t.set_subsegment(k, true);
-                mesh.subsegments().set(t.v[next3(k)], t.v[prev3(k)], SubsegmentInfo{1, SubsegmentInfo::no_segment});
+                mesh.subsegments().set(t.v[next3(k)], t.v[prev3(k)],
+                                       SubsegmentInfo{1, SubsegmentInfo::no_segment});
             }
         }
     }
@@ -106,7 +111,8 @@ void carve_domain(Mesh& mesh, const Pslg& pslg, const CdtOptions& options) {
                 const EdgeRef n = t.n[k];
                 const bool other_dead = n.is_none() || mesh.triangle(n.triangle()).marked();
                 if (!other_dead) mesh.triangle(n.triangle()).n[n.edge()] = EdgeRef::none();
-                if (t.is_subsegment(k) && other_dead) mesh.subsegments().erase(t.v[next3(k)], t.v[prev3(k)]);
+                if (t.is_subsegment(k) && other_dead)
+                    mesh.subsegments().erase(t.v[next3(k)], t.v[prev3(k)]);
             }
         }
         for (TriangleId id : infected) pool.destroy(id);

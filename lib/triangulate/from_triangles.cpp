@@ -63,12 +63,12 @@ public:
     std::string vertex(std::uint32_t v) const { return std::to_string(std::int64_t{v} + base_); }
     std::string triangle(TriangleId t) const {
         const Triangle& r = mesh_.triangle(t);
-        return fmt::format("triangle {} (corners {}, {}, {})", std::int64_t{index(t)} + base_, vertex(index(r.v[0])),
-                           vertex(index(r.v[1])), vertex(index(r.v[2])));
+        return fmt::format("triangle {} (corners {}, {}, {})", std::int64_t{index(t)} + base_,
+                           vertex(index(r.v[0])), vertex(index(r.v[1])), vertex(index(r.v[2])));
     }
     std::string triangle(std::uint32_t i, std::uint32_t a, std::uint32_t b, std::uint32_t c) const {
-        return fmt::format("triangle {} (corners {}, {}, {})", std::int64_t{i} + base_, vertex(a), vertex(b),
-                           vertex(c));
+        return fmt::format("triangle {} (corners {}, {}, {})", std::int64_t{i} + base_, vertex(a),
+                           vertex(b), vertex(c));
     }
 
 private:
@@ -95,7 +95,8 @@ public:
             const Triangle& r = mesh.triangle(TriangleId{t});
             for (int k = 0; k < 3; ++k) {
                 const std::uint32_t a = index(r.v[next3(k)]), b = index(r.v[prev3(k)]);
-                entries_[end_[std::min(a, b)]++] = HalfEdge{std::max(a, b), EdgeRef(TriangleId{t}, k).bits()};
+                entries_[end_[std::min(a, b)]++] =
+                    HalfEdge{std::max(a, b), EdgeRef(TriangleId{t}, k).bits()};
             }
         }
         end_.pop_back();
@@ -123,8 +124,8 @@ private:
 // does exactly when a is in the lower half and b in the upper one, because
 // its angle at v is below pi.  A closed star of counter-clockwise triangles
 // winds exactly once around its vertex unless it overlaps itself.
-void create_triangles(const TriangleMeshInput& in, Pool& pool, const Namer& name, std::vector<std::uint8_t>& used,
-                      std::vector<std::uint8_t>& winds) {
+void create_triangles(const TriangleMeshInput& in, Pool& pool, const Namer& name,
+                      std::vector<std::uint8_t>& used, std::vector<std::uint8_t>& winds) {
     const std::size_t n = in.points.size();
     const std::size_t count = in.corners.size() / in.corners_per_triangle;
     for (std::size_t i = 0; i < count; ++i) {
@@ -132,27 +133,32 @@ void create_triangles(const TriangleMeshInput& in, Pool& pool, const Namer& name
         const auto id = static_cast<std::uint32_t>(i);
         for (int k = 0; k < 3; ++k)
             if (c[k] >= n)
-                throw GeometryError(fmt::format("{} names vertex {}, but there are only {} vertices",
-                                                name.triangle(id, c[0], c[1], c[2]), name.vertex(c[k]), n));
+                throw GeometryError(
+                    fmt::format("{} names vertex {}, but there are only {} vertices",
+                                name.triangle(id, c[0], c[1], c[2]), name.vertex(c[k]), n));
         if (c[0] == c[1] || c[1] == c[2] || c[2] == c[0])
-            throw GeometryError(fmt::format("{} repeats a vertex", name.triangle(id, c[0], c[1], c[2])));
+            throw GeometryError(
+                fmt::format("{} repeats a vertex", name.triangle(id, c[0], c[1], c[2])));
         const Point& a = in.points[c[0]];
         const Point& b = in.points[c[1]];
         const Point& d = in.points[c[2]];
         const double o = geometry::orient2d(a, b, d);
         if (o < 0)
-            throw GeometryError(fmt::format("{} is clockwise; corners must be listed counter-clockwise",
-                                            name.triangle(id, c[0], c[1], c[2])));
+            throw GeometryError(
+                fmt::format("{} is clockwise; corners must be listed counter-clockwise",
+                            name.triangle(id, c[0], c[1], c[2])));
         if (o == 0)
             throw GeometryError(fmt::format("{} has zero area (its corners are collinear)",
                                             name.triangle(id, c[0], c[1], c[2])));
         const TriangleId t = pool.create(VertexId{c[0]}, VertexId{c[1]}, VertexId{c[2]});
-        if (index(t) != id) throw Error("from_triangles: the pool did not hand out triangle ids in order");
+        if (index(t) != id)
+            throw Error("from_triangles: the pool did not hand out triangle ids in order");
         const Point* p[3] = {&a, &b, &d};
         for (int k = 0; k < 3; ++k) {
             used[c[k]] = 1;
             const Point& v = *p[k];
-            if (!upper(v, *p[next3(k)]) && upper(v, *p[prev3(k)]) && winds[c[k]] < 255) ++winds[c[k]];
+            if (!upper(v, *p[next3(k)]) && upper(v, *p[prev3(k)]) && winds[c[k]] < 255)
+                ++winds[c[k]];
         }
     }
 }
@@ -169,31 +175,35 @@ void link_edges(Mesh& mesh, EdgeIndex& edges, const Namer& name, std::uint32_t v
             while (run_end != last && run_end->other == run->other) ++run_end;
             const EdgeRef e = EdgeRef::from_bits(run->ref);
             switch (run_end - run) {
-            case 1: {
-                mesh.triangle(e.triangle()).set_subsegment(e.edge(), true);
-                boundary.push_back(e);
-                on_boundary[v] = 1;
-                on_boundary[run->other] = 1;
-                break;
-            }
-            case 2: {
-                const EdgeRef f = EdgeRef::from_bits(run[1].ref);
-                if (mesh.origin(e) == mesh.origin(f))
+                case 1: {
+                    mesh.triangle(e.triangle()).set_subsegment(e.edge(), true);
+                    boundary.push_back(e);
+                    on_boundary[v] = 1;
+                    on_boundary[run->other] = 1;
+                    break;
+                }
+                case 2: {
+                    const EdgeRef f = EdgeRef::from_bits(run[1].ref);
+                    if (mesh.origin(e) == mesh.origin(f))
+                        throw GeometryError(
+                            fmt::format("{} and {} lie on the same side of their common edge "
+                                        "{}-{}: they overlap",
+                                        name.triangle(e.triangle()), name.triangle(f.triangle()),
+                                        name.vertex(index(mesh.origin(e))),
+                                        name.vertex(index(mesh.destination(e)))));
+                    mesh.link(e, f);
+                    break;
+                }
+                default: {
+                    std::string list;
+                    for (HalfEdge* h = run; h != run_end && h - run < 4; ++h)
+                        list += (h == run ? "" : ", ") +
+                                name.triangle(EdgeRef::from_bits(h->ref).triangle());
+                    if (run_end - run > 4) list += fmt::format(" and {} more", run_end - run - 4);
                     throw GeometryError(fmt::format(
-                        "{} and {} lie on the same side of their common edge {}-{}: they overlap",
-                        name.triangle(e.triangle()), name.triangle(f.triangle()), name.vertex(index(mesh.origin(e))),
-                        name.vertex(index(mesh.destination(e)))));
-                mesh.link(e, f);
-                break;
-            }
-            default: {
-                std::string list;
-                for (HalfEdge* h = run; h != run_end && h - run < 4; ++h)
-                    list += (h == run ? "" : ", ") + name.triangle(EdgeRef::from_bits(h->ref).triangle());
-                if (run_end - run > 4) list += fmt::format(" and {} more", run_end - run - 4);
-                throw GeometryError(fmt::format("edge {}-{} is shared by {} triangles, at most two may share it: {}",
-                                                name.vertex(v), name.vertex(run->other), run_end - run, list));
-            }
+                        "edge {}-{} is shared by {} triangles, at most two may share it: {}",
+                        name.vertex(v), name.vertex(run->other), run_end - run, list));
+                }
             }
             run = run_end;
         }
@@ -208,9 +218,10 @@ void check_winding(const std::vector<std::uint8_t>& used, const std::vector<std:
         if (!used[v]) continue;
         const bool ok = on_boundary[v] ? winds[v] <= 1 : winds[v] == 1;
         if (!ok)
-            throw GeometryError(fmt::format(
-                "the triangles around vertex {} turn around it {} times: they overlap",
-                name.vertex(static_cast<std::uint32_t>(v)), winds[v] == 255 ? std::string("many") : std::to_string(winds[v])));
+            throw GeometryError(
+                fmt::format("the triangles around vertex {} turn around it {} times: they overlap",
+                            name.vertex(static_cast<std::uint32_t>(v)),
+                            winds[v] == 255 ? std::string("many") : std::to_string(winds[v])));
     }
 }
 
@@ -222,8 +233,9 @@ void flag_segments(const TriangleMeshInput& in, Mesh& mesh, EdgeIndex& edges, co
     for (std::size_t s = 0; s < count; ++s) {
         const std::uint32_t a = in.segments[2 * s], b = in.segments[2 * s + 1];
         if (a >= n || b >= n)
-            throw GeometryError(fmt::format("segment {} names vertex {}, but there are only {} vertices",
-                                            std::int64_t(s) + in.index_base, name.vertex(a >= n ? a : b), n));
+            throw GeometryError(
+                fmt::format("segment {} names vertex {}, but there are only {} vertices",
+                            std::int64_t(s) + in.index_base, name.vertex(a >= n ? a : b), n));
         if (a == b) {
             ++report.segments_degenerate;
             continue;
@@ -244,7 +256,8 @@ void flag_segments(const TriangleMeshInput& in, Mesh& mesh, EdgeIndex& edges, co
         if (f.is_none() && marker == 0) marker = 1;
         mesh.triangle(e.triangle()).set_subsegment(e.edge(), true);
         if (!f.is_none()) mesh.triangle(f.triangle()).set_subsegment(f.edge(), true);
-        mesh.subsegments().set(VertexId{a}, VertexId{b}, SubsegmentInfo{marker, static_cast<std::uint32_t>(s)});
+        mesh.subsegments().set(VertexId{a}, VertexId{b},
+                               SubsegmentInfo{marker, static_cast<std::uint32_t>(s)});
         ++report.segments_flagged;
     }
 }
@@ -259,10 +272,12 @@ void insert_missing(const TriangleMeshInput& in, Pool& pool, const std::vector<s
     TriangleId hint = no_triangle;
     for (std::uint32_t s : report.missing_segments) {
         const std::uint32_t a = in.segments[2 * s], b = in.segments[2 * s + 1];
-        const std::string what = fmt::format("segment {} ({}-{}) is not an edge of the mesh", std::int64_t{s} + in.index_base,
-                                             name.vertex(a), name.vertex(b));
+        const std::string what =
+            fmt::format("segment {} ({}-{}) is not an edge of the mesh",
+                        std::int64_t{s} + in.index_base, name.vertex(a), name.vertex(b));
         if (!used[a] || !used[b])
-            throw GeometryError(what + fmt::format(", and vertex {} is in no triangle", name.vertex(used[a] ? b : a)));
+            throw GeometryError(what + fmt::format(", and vertex {} is in no triangle",
+                                                   name.vertex(used[a] ? b : a)));
         const SubsegmentInfo info{in.segment_markers.empty() ? 0 : in.segment_markers[s], s};
         const TriangleId start = buffer.corner[a] != no_triangle ? buffer.corner[a] : hint;
         try {
@@ -272,7 +287,8 @@ void insert_missing(const TriangleMeshInput& in, Pool& pool, const std::vector<s
         } catch (const Error& e) {
             throw GeometryError(what + " and cannot be inserted: " + e.what());
         }
-        report.segment_events.insert(report.segment_events.end(), buffer.events.begin(), buffer.events.end());
+        report.segment_events.insert(report.segment_events.end(), buffer.events.begin(),
+                                     buffer.events.end());
         ++report.segments_inserted;
     }
 }
@@ -281,7 +297,8 @@ void insert_missing(const TriangleMeshInput& in, Pool& pool, const std::vector<s
 // its generation moved on): each takes those of a neighbour that kept its
 // own, across edges that are not subsegments first (the same side of the
 // new segment), then across any edge.
-void spread_attributes(const Mesh& mesh, std::uint32_t original, std::uint32_t count, std::vector<double>& values) {
+void spread_attributes(const Mesh& mesh, std::uint32_t original, std::uint32_t count,
+                       std::vector<double>& values) {
     const std::uint32_t end = mesh.triangle_end();
     std::vector<std::uint8_t> known(end, 0);
     std::vector<TriangleId> unknown;
@@ -301,7 +318,9 @@ void spread_attributes(const Mesh& mesh, std::uint32_t original, std::uint32_t c
                 const Triangle& t = mesh.triangle(id);
                 for (int k = 0; k < 3; ++k) {
                     const EdgeRef n = t.n[k];
-                    if (n.is_none() || !known[index(n.triangle())] || (pass == 0 && t.is_subsegment(k))) continue;
+                    if (n.is_none() || !known[index(n.triangle())] ||
+                        (pass == 0 && t.is_subsegment(k)))
+                        continue;
                     std::copy_n(values.begin() + std::ptrdiff_t{index(n.triangle())} * count, count,
                                 values.begin() + std::ptrdiff_t{index(id)} * count);
                     known[index(id)] = 1;
@@ -330,8 +349,9 @@ mesh::Mesh from_triangles(const TriangleMeshInput& in, TriangleMeshReport& repor
     if (count == 0) throw GeometryError("the mesh has no triangles");
     for (std::size_t i = 0; i < n; ++i)
         if (!std::isfinite(in.points[i].x) || !std::isfinite(in.points[i].y))
-            throw GeometryError(fmt::format("vertex {} has a coordinate that is not a finite number",
-                                            std::int64_t(i) + in.index_base));
+            throw GeometryError(
+                fmt::format("vertex {} has a coordinate that is not a finite number",
+                            std::int64_t(i) + in.index_base));
 
     Mesh mesh;
     mesh.add_vertices(in.points, VertexKind::input);
@@ -351,10 +371,12 @@ mesh::Mesh from_triangles(const TriangleMeshInput& in, TriangleMeshReport& repor
         }
         for (EdgeRef e : boundary) {
             const VertexId a = mesh.origin(e), b = mesh.destination(e);
-            if (!mesh.subsegments().find(a, b)) mesh.subsegments().set(a, b, SubsegmentInfo{1, SubsegmentInfo::no_segment});
+            if (!mesh.subsegments().find(a, b))
+                mesh.subsegments().set(a, b, SubsegmentInfo{1, SubsegmentInfo::no_segment});
         }
         report.boundary_edges = boundary.size();
-        report.unused_vertices = static_cast<std::size_t>(std::count(used.begin(), used.end(), std::uint8_t{0}));
+        report.unused_vertices =
+            static_cast<std::size_t>(std::count(used.begin(), used.end(), std::uint8_t{0}));
         if (!report.missing_segments.empty()) insert_missing(in, pool, used, name, report);
     }
     report.attributes.assign(std::size_t{mesh.triangle_end()} * in.attribute_count, 0.0);

@@ -78,10 +78,10 @@ struct TriangleMeshInput {
 };
 
 struct TriangleMeshReport {
-    std::size_t boundary_edges = 0;     // edges with a triangle on one side only
-    std::size_t unused_vertices = 0;    // vertices no triangle uses
-    std::size_t segments_flagged = 0;   // segments that are mesh edges, now subsegments
-    std::size_t segments_repeated = 0;  // same endpoints as an earlier segment (the first wins)
+    std::size_t boundary_edges = 0;       // edges with a triangle on one side only
+    std::size_t unused_vertices = 0;      // vertices no triangle uses
+    std::size_t segments_flagged = 0;     // segments that are mesh edges, now subsegments
+    std::size_t segments_repeated = 0;    // same endpoints as an earlier segment (the first wins)
     std::size_t segments_degenerate = 0;  // equal endpoints, ignored
     // Segments (input indices) that were not edges of the mesh, inserted;
     // what insertion did beyond flagging edges (new vertices where they

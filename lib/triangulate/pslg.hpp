@@ -28,7 +28,7 @@ struct Pslg {
 };
 
 struct CdtOptions {
-    bool convex_hull = false;   // -c: keep every triangle of the hull; hull edges become subsegments
+    bool convex_hull = false;  // -c: keep every triangle of the hull; hull edges become subsegments
     bool ignore_holes = false;  // -O
 };
 
@@ -38,7 +38,7 @@ struct CdtOptions {
 struct NewSegmentVertex {
     static constexpr std::uint32_t no_segment = 0xFFFFFFFFu;
     mesh::VertexId vertex{};
-    std::uint32_t segment = no_segment;        // the segment being inserted
+    std::uint32_t segment = no_segment;  // the segment being inserted
     double t = 0;
     std::uint32_t other_segment = no_segment;  // the segment it crossed (no_segment: none known)
     double other_t = 0;

@@ -110,8 +110,8 @@ std::vector<std::uint32_t> brio_order(std::span<const geometry::Point> points, s
         std::vector<std::size_t> next(start.begin(), start.end() - 1);
         for (std::size_t i = 0; i < n; ++i) {
             const auto& p = points[i];
-            const std::uint64_t h =
-                hilbert_index(cell(p.x / 2 - min_x / 2, scale_x), cell(p.y / 2 - min_y / 2, scale_y));
+            const std::uint64_t h = hilbert_index(cell(p.x / 2 - min_x / 2, scale_x),
+                                                  cell(p.y / 2 - min_y / 2, scale_y));
             keys[next[round[i]]++] = (h << 32) | static_cast<std::uint64_t>(i);
         }
     }

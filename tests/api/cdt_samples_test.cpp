@@ -41,7 +41,8 @@ void check_samples(const std::vector<fs::path>& files) {
             const mesh::Mesh m = triangulate::constrained_delaunay(pslg, options, report);
             INFO(file.filename().string() << " convex_hull=" << options.convex_hull
                                           << " ignore_holes=" << options.ignore_holes);
-            if (options.convex_hull) CHECK(m.count_triangles() > 0);  // box.poly without -c is all eaten
+            if (options.convex_hull)
+                CHECK(m.count_triangles() > 0);  // box.poly without -c is all eaten
             const auto problems = mesh::check_mesh(m);
             for (const auto& p : problems) INFO(p);
             CHECK(problems.empty());
@@ -65,7 +66,8 @@ TEST_CASE("Triangle's sample PSLGs triangulate into valid conforming CDTs", "[ap
     check_samples(files);
 }
 
-TEST_CASE("the project's sample PSLGs triangulate into valid conforming CDTs", "[api][cdt][samples]") {
+TEST_CASE("the project's sample PSLGs triangulate into valid conforming CDTs",
+          "[api][cdt][samples]") {
     const auto files = poly_files(fs::path(GPDR_SOURCE_DIR) / "poly-samples");
     REQUIRE(!files.empty());
     check_samples(files);

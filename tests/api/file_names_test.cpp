@@ -137,7 +137,7 @@ TEST_CASE("apply_input_name turns the extension into switches", "[api][file_name
     CHECK(o.refine);
     CHECK(o.regional_area);
     CHECK_FALSE(o.poly);
-    CHECK_FALSE(o.quality);  // .area asks for refinement by area, not an angle bound
+    CHECK_FALSE(o.quality);          // .area asks for refinement by area, not an angle bound
     CHECK(o.input == "box.1.area");  // the name as given stays
     gpdr::apply_input_name(o);       // a second call changes nothing
     CHECK(o.refine);

@@ -44,8 +44,7 @@ std::vector<double> numbers_after(const std::vector<std::string>& lines, const s
                 std::size_t used = 0;
                 const double v = std::stod(word, &used);
                 if (used == word.size()) out.push_back(v);
-            } catch (const std::exception&) {
-            }
+            } catch (const std::exception&) {}
         }
         return out;
     }
@@ -54,9 +53,11 @@ std::vector<double> numbers_after(const std::vector<std::string>& lines, const s
 
 // The counts of a histogram: the last number before and after each '|' of
 // the lines that follow `title`, left column first.
-std::vector<std::uint64_t> histogram(const std::vector<std::string>& lines, const std::string& title, int rows) {
-    const auto start = std::find_if(lines.begin(), lines.end(),
-                                    [&](const std::string& l) { return l.find(title) != std::string::npos; });
+std::vector<std::uint64_t> histogram(const std::vector<std::string>& lines,
+                                     const std::string& title, int rows) {
+    const auto start = std::find_if(lines.begin(), lines.end(), [&](const std::string& l) {
+        return l.find(title) != std::string::npos;
+    });
     REQUIRE(start != lines.end());
     std::vector<std::uint64_t> left, right;
     for (int r = 1; r <= rows; ++r) {
@@ -79,7 +80,8 @@ std::vector<std::uint64_t> histogram(const std::vector<std::string>& lines, cons
 }  // namespace
 
 TEST_CASE("quality statistics of a 3 x 1 rectangle cut along its diagonal", "[api][statistics]") {
-    const auto lines = gpdr::api::quality_statistics(arrays({0, 0, 3, 0, 3, 1, 0, 1}, {0, 1, 2, 0, 2, 3}));
+    const auto lines =
+        gpdr::api::quality_statistics(arrays({0, 0, 3, 0, 3, 1, 0, 1}, {0, 1, 2, 0, 2, 3}));
     CHECK(numbers_after(lines, "Smallest area:") == std::vector<double>{1.5, 1.5});
     const auto edges = numbers_after(lines, "Shortest edge:");
     REQUIRE(edges.size() == 2);
@@ -98,7 +100,8 @@ TEST_CASE("quality statistics of a 3 x 1 rectangle cut along its diagonal", "[ap
     const auto ratios = histogram(lines, "aspect ratio histogram", 8);
     CHECK(ratios == std::vector<std::uint64_t>{0, 0, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0});
     const auto angles = histogram(lines, "Angle histogram", 9);
-    CHECK(angles == std::vector<std::uint64_t>{0, 2, 0, 0, 0, 0, 0, 2, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0});
+    CHECK(angles ==
+          std::vector<std::uint64_t>{0, 2, 0, 0, 0, 0, 0, 2, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0});
 }
 
 namespace {
@@ -125,7 +128,8 @@ MeshArrays jittered_grid(std::vector<double>& xy, std::vector<std::uint32_t>& co
 
 }  // namespace
 
-TEST_CASE("quality statistics of thousands of triangles match a triangle-by-triangle count", "[api][statistics]") {
+TEST_CASE("quality statistics of thousands of triangles match a triangle-by-triangle count",
+          "[api][statistics]") {
     std::vector<double> xy;
     std::vector<std::uint32_t> corners;
     const MeshArrays m = jittered_grid(xy, corners);
@@ -136,7 +140,8 @@ TEST_CASE("quality statistics of thousands of triangles match a triangle-by-tria
     std::vector<std::uint64_t> angles(18);
     for (std::size_t t = 0; t < corners.size() / 3; ++t) {
         for (int k = 0; k < 3; ++k) {
-            const std::uint32_t a = corners[3 * t + k], b = corners[3 * t + (k + 1) % 3], c = corners[3 * t + (k + 2) % 3];
+            const std::uint32_t a = corners[3 * t + k], b = corners[3 * t + (k + 1) % 3],
+                                c = corners[3 * t + (k + 2) % 3];
             const double ux = xy[2 * b] - xy[2 * a], uy = xy[2 * b + 1] - xy[2 * a + 1];
             const double vx = xy[2 * c] - xy[2 * a], vy = xy[2 * c + 1] - xy[2 * a + 1];
             const double degrees =

@@ -47,7 +47,8 @@ std::vector<Tri> canonical(const Mesh& m) {
 std::set<Sub> expected_subsegments(const Mesh& m) {
     std::set<Sub> out;
     for_each_edge(m, [&](const EdgeView& e) {
-        const std::uint32_t lo = std::min(index(e.from), index(e.to)), hi = std::max(index(e.from), index(e.to));
+        const std::uint32_t lo = std::min(index(e.from), index(e.to)),
+                            hi = std::max(index(e.from), index(e.to));
         const SubsegmentInfo* info = e.subsegment ? m.subsegments().find(e.from, e.to) : nullptr;
         int marker = info ? info->marker : 0;
         if (e.hull && marker == 0) marker = 1;
@@ -109,7 +110,8 @@ void round_trip(const fs::path& input, bool convex_hull) {
 
     // Read back as -rp reads them, and rebuild.
     const auto node_back = io::read_node(stem + ".node", ignore_warning);
-    const auto ele_back = io::read_ele(stem + ".ele", node_back.base, node_back.data.size(), ignore_warning);
+    const auto ele_back =
+        io::read_ele(stem + ".ele", node_back.base, node_back.data.size(), ignore_warning);
     const auto poly_back = io::read_poly(stem + ".poly", ignore_warning);
     CHECK(node_back.base == base);
     std::vector<geometry::Point> points;

@@ -32,7 +32,8 @@ namespace {
 
 // The smallest angle of triangle abc in degrees, computed independently of
 // the refiner (law of cosines).
-double smallest_angle(const geometry::Point& a, const geometry::Point& b, const geometry::Point& c) {
+double smallest_angle(const geometry::Point& a, const geometry::Point& b,
+                      const geometry::Point& c) {
     const geometry::Point p[3] = {a, b, c};
     double smallest = 180;
     for (int k = 0; k < 3; ++k) {
@@ -40,8 +41,10 @@ double smallest_angle(const geometry::Point& a, const geometry::Point& b, const 
         const auto& u = p[(k + 1) % 3];
         const auto& v = p[(k + 2) % 3];
         const double ux = u.x - o.x, uy = u.y - o.y, vx = v.x - o.x, vy = v.y - o.y;
-        const double cosine = (ux * vx + uy * vy) / std::sqrt((ux * ux + uy * uy) * (vx * vx + vy * vy));
-        smallest = std::min(smallest, std::acos(std::clamp(cosine, -1.0, 1.0)) * 180 / std::numbers::pi);
+        const double cosine =
+            (ux * vx + uy * vy) / std::sqrt((ux * ux + uy * uy) * (vx * vx + vy * vy));
+        smallest =
+            std::min(smallest, std::acos(std::clamp(cosine, -1.0, 1.0)) * 180 / std::numbers::pi);
     }
     return smallest;
 }
@@ -52,7 +55,8 @@ void refine_and_check(const fs::path& file) {
     // Bounding-box area, for an area bound that makes a few hundred triangles.
     double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
     for (const auto& p : pslg.points) {
-        x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+        x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x),
+        y1 = std::max(y1, p.y);
     }
     const double box = (x1 - x0) * (y1 - y0);
     std::vector<mesh::VertexId> ends;
@@ -61,7 +65,8 @@ void refine_and_check(const fs::path& file) {
     for (const double angle : {0.0, 10.0, 20.0, 28.0, 33.0}) {
         for (const double area : {-1.0, box / 300}) {
             if (angle == 0 && area < 0) continue;  // nothing to refine
-            for (const Placement placement : {Placement::circumcentre, Placement::off_centre, Placement::optimisation}) {
+            for (const Placement placement :
+                 {Placement::circumcentre, Placement::off_centre, Placement::optimisation}) {
                 // -c so that box.poly (no closed boundary) has a mesh too.
                 triangulate::CdtOptions cdt;
                 cdt.convex_hull = true;
@@ -76,7 +81,8 @@ void refine_and_check(const fs::path& file) {
                 refine::RefineReport refined;
                 refine::refine_mesh(m, settings, refined);
 
-                INFO(file.filename().string() << " q" << angle << " a" << area << " P" << static_cast<int>(placement));
+                INFO(file.filename().string()
+                     << " q" << angle << " a" << area << " P" << static_cast<int>(placement));
                 REQUIRE(refined.stopped == refine::RefineReport::Stop::none);
                 const auto problems = mesh::check_mesh(m);
                 for (const auto& p : problems) INFO(p);

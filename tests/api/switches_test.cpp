@@ -26,11 +26,11 @@ std::string describe(const Options& o) {
         o.poly, o.refine, o.quality, o.min_angle, o.area_limit, o.max_area, o.regional_area,
         o.user_test, o.region_attributes, o.convex_hull, o.conforming_delaunay, o.jettison,
         o.write_edges, o.write_voronoi, o.write_neighbours, o.write_off, o.no_boundary_markers,
-        o.no_poly_output, o.no_node_output, o.no_ele_output, o.no_iteration_numbers,
-        o.ignore_holes, o.no_exact, o.zero_based, o.order, o.no_segment_splitting,
-        o.steiner_limit, o.max_steiner, o.incremental, o.sweepline, o.vertical_cuts,
-        o.split_segments, o.check, o.quiet, o.verbosity, o.help, o.threads, o.granularity,
-        static_cast<int>(o.placement), o.unsuitable_library, o.input);
+        o.no_poly_output, o.no_node_output, o.no_ele_output, o.no_iteration_numbers, o.ignore_holes,
+        o.no_exact, o.zero_based, o.order, o.no_segment_splitting, o.steiner_limit, o.max_steiner,
+        o.incremental, o.sweepline, o.vertical_cuts, o.split_segments, o.check, o.quiet,
+        o.verbosity, o.help, o.threads, o.granularity, static_cast<int>(o.placement),
+        o.unsuitable_library, o.input);
 }
 
 Options parse(const std::vector<std::string>& clusters) {
@@ -52,45 +52,134 @@ TEST_CASE("parse_switches reads every switch as Triangle does", "[api][switches]
         {{"-p"}, [](Options& o) { o.poly = true; }},
         {{"p"}, [](Options& o) { o.poly = true; }},  // the leading '-' is optional
         {{"-r"}, [](Options& o) { o.refine = true; }},
-        {{"-q"}, [](Options& o) { o.quality = true; o.min_angle = 20; }},
-        {{"-q30"}, [](Options& o) { o.quality = true; o.min_angle = 30; }},
-        {{"-q32.5"}, [](Options& o) { o.quality = true; o.min_angle = 32.5; }},
-        {{"-q.5"}, [](Options& o) { o.quality = true; o.min_angle = 0.5; }},
-        {{"-q0"}, [](Options& o) { o.quality = true; o.min_angle = 0; }},
-        {{"-q30q"}, [](Options& o) { o.quality = true; o.min_angle = 20; }},  // last one wins
-        {{"-q1e1"}, [](Options& o) { o.quality = true; o.min_angle = 10; }},
+        {{"-q"},
+         [](Options& o) {
+             o.quality = true;
+             o.min_angle = 20;
+         }},
+        {{"-q30"},
+         [](Options& o) {
+             o.quality = true;
+             o.min_angle = 30;
+         }},
+        {{"-q32.5"},
+         [](Options& o) {
+             o.quality = true;
+             o.min_angle = 32.5;
+         }},
+        {{"-q.5"},
+         [](Options& o) {
+             o.quality = true;
+             o.min_angle = 0.5;
+         }},
+        {{"-q0"},
+         [](Options& o) {
+             o.quality = true;
+             o.min_angle = 0;
+         }},
+        {{"-q30q"},
+         [](Options& o) {
+             o.quality = true;
+             o.min_angle = 20;
+         }},  // last one wins
+        {{"-q1e1"},
+         [](Options& o) {
+             o.quality = true;
+             o.min_angle = 10;
+         }},
         {{"-a"}, [](Options& o) { o.regional_area = true; }},
-        {{"-a0.5"}, [](Options& o) { o.area_limit = true; o.max_area = 0.5; }},
-        {{"-a.25"}, [](Options& o) { o.area_limit = true; o.max_area = 0.25; }},
-        {{"-aa0.5"}, [](Options& o) { o.regional_area = true; o.area_limit = true; o.max_area = 0.5; }},
-        {{"-a0.5a"}, [](Options& o) { o.regional_area = true; o.area_limit = true; o.max_area = 0.5; }},
-        {{"-a1a2"}, [](Options& o) { o.area_limit = true; o.max_area = 2; }},
-        {{"-a1e-5"}, [](Options& o) { o.area_limit = true; o.max_area = 1e-5; }},
-        {{"-a1e+2"}, [](Options& o) { o.area_limit = true; o.max_area = 100; }},
-        {{"-a2.5e3"}, [](Options& o) { o.area_limit = true; o.max_area = 2500; }},
-        {{"-a1e"}, [](Options& o) { o.area_limit = true; o.max_area = 1; o.write_edges = true; }},
-        {{"-a1ep"}, [](Options& o) { o.area_limit = true; o.max_area = 1; o.write_edges = true; o.poly = true; }},
+        {{"-a0.5"},
+         [](Options& o) {
+             o.area_limit = true;
+             o.max_area = 0.5;
+         }},
+        {{"-a.25"},
+         [](Options& o) {
+             o.area_limit = true;
+             o.max_area = 0.25;
+         }},
+        {{"-aa0.5"},
+         [](Options& o) {
+             o.regional_area = true;
+             o.area_limit = true;
+             o.max_area = 0.5;
+         }},
+        {{"-a0.5a"},
+         [](Options& o) {
+             o.regional_area = true;
+             o.area_limit = true;
+             o.max_area = 0.5;
+         }},
+        {{"-a1a2"},
+         [](Options& o) {
+             o.area_limit = true;
+             o.max_area = 2;
+         }},
+        {{"-a1e-5"},
+         [](Options& o) {
+             o.area_limit = true;
+             o.max_area = 1e-5;
+         }},
+        {{"-a1e+2"},
+         [](Options& o) {
+             o.area_limit = true;
+             o.max_area = 100;
+         }},
+        {{"-a2.5e3"},
+         [](Options& o) {
+             o.area_limit = true;
+             o.max_area = 2500;
+         }},
+        {{"-a1e"},
+         [](Options& o) {
+             o.area_limit = true;
+             o.max_area = 1;
+             o.write_edges = true;
+         }},
+        {{"-a1ep"},
+         [](Options& o) {
+             o.area_limit = true;
+             o.max_area = 1;
+             o.write_edges = true;
+             o.poly = true;
+         }},
         {{"-u"}, [](Options& o) { o.user_test = true; }},
         {{"-A"}, [](Options& o) { o.region_attributes = true; }},
         {{"-c"}, [](Options& o) { o.convex_hull = true; }},
         {{"-D"}, [](Options& o) { o.conforming_delaunay = true; }},
         {{"-j"}, [](Options& o) { o.jettison = true; }},
-        {{"-jq"}, [](Options& o) { o.jettison = true; o.quality = true; }},
+        {{"-jq"},
+         [](Options& o) {
+             o.jettison = true;
+             o.quality = true;
+         }},
         {{"-j4"}, [](Options& o) { o.threads = 4; }},
         {{"-j0"}, [](Options& o) { o.threads = 0; }},
-        {{"-j4j"}, [](Options& o) { o.threads = 4; o.jettison = true; }},
+        {{"-j4j"},
+         [](Options& o) {
+             o.threads = 4;
+             o.jettison = true;
+         }},
         {{"-e"}, [](Options& o) { o.write_edges = true; }},
         {{"-v"}, [](Options& o) { o.write_voronoi = true; }},
         {{"-n"}, [](Options& o) { o.write_neighbours = true; }},
         {{"-g"}, [](Options& o) { o.write_off = true; }},
         {{"-g64"}, [](Options& o) { o.granularity = 64; }},
-        {{"-g64g"}, [](Options& o) { o.granularity = 64; o.write_off = true; }},
+        {{"-g64g"},
+         [](Options& o) {
+             o.granularity = 64;
+             o.write_off = true;
+         }},
         {{"-B"}, [](Options& o) { o.no_boundary_markers = true; }},
         {{"-P"}, [](Options& o) { o.no_poly_output = true; }},
         {{"-P0"}, [](Options& o) { o.placement = Placement::circumcentre; }},
         {{"-P1"}, [](Options& o) { o.placement = Placement::off_centre; }},
         {{"-P2"}, [](Options& o) { o.placement = Placement::optimisation; }},
-        {{"-P2P"}, [](Options& o) { o.placement = Placement::optimisation; o.no_poly_output = true; }},
+        {{"-P2P"},
+         [](Options& o) {
+             o.placement = Placement::optimisation;
+             o.no_poly_output = true;
+         }},
         {{"-N"}, [](Options& o) { o.no_node_output = true; }},
         {{"-E"}, [](Options& o) { o.no_ele_output = true; }},
         {{"-I"}, [](Options& o) { o.no_iteration_numbers = true; }},
@@ -102,10 +191,26 @@ TEST_CASE("parse_switches reads every switch as Triangle does", "[api][switches]
         {{"-YY"}, [](Options& o) { o.no_segment_splitting = 2; }},
         {{"-Y", "-Y"}, [](Options& o) { o.no_segment_splitting = 2; }},
         {{"-YYY"}, [](Options& o) { o.no_segment_splitting = 2; }},
-        {{"-S"}, [](Options& o) { o.steiner_limit = true; o.max_steiner = 0; }},
-        {{"-S500"}, [](Options& o) { o.steiner_limit = true; o.max_steiner = 500; }},
-        {{"-S500S"}, [](Options& o) { o.steiner_limit = true; o.max_steiner = 0; }},
-        {{"-S10000000000"}, [](Options& o) { o.steiner_limit = true; o.max_steiner = 10000000000ull; }},
+        {{"-S"},
+         [](Options& o) {
+             o.steiner_limit = true;
+             o.max_steiner = 0;
+         }},
+        {{"-S500"},
+         [](Options& o) {
+             o.steiner_limit = true;
+             o.max_steiner = 500;
+         }},
+        {{"-S500S"},
+         [](Options& o) {
+             o.steiner_limit = true;
+             o.max_steiner = 0;
+         }},
+        {{"-S10000000000"},
+         [](Options& o) {
+             o.steiner_limit = true;
+             o.max_steiner = 10000000000ull;
+         }},
         {{"-i"}, [](Options& o) { o.incremental = true; }},
         {{"-F"}, [](Options& o) { o.sweepline = true; }},
         {{"-l"}, [](Options& o) { o.vertical_cuts = true; }},
@@ -117,11 +222,26 @@ TEST_CASE("parse_switches reads every switch as Triangle does", "[api][switches]
         {{"-V", "-VV"}, [](Options& o) { o.verbosity = 3; }},
         {{"-h"}, [](Options& o) { o.help = true; }},
         {{"-H"}, [](Options& o) { o.help = true; }},
-        {{"-ph"}, [](Options& o) { o.poly = true; o.help = true; }},
+        {{"-ph"},
+         [](Options& o) {
+             o.poly = true;
+             o.help = true;
+         }},
         {{"-hk"}, [](Options& o) { o.help = true; }},  // Triangle stops at h
-        {{"-pq30a0.1"}, [](Options& o) { o.poly = o.quality = o.area_limit = true; o.min_angle = 30; o.max_area = 0.1; }},
-        {{"-p", "-q30", "-a0.1"}, [](Options& o) { o.poly = o.quality = o.area_limit = true; o.min_angle = 30; o.max_area = 0.1; }},
-        {{"-pq33.5a.001DYYS100o2zAevngBPNEIOXilsCQV"}, [](Options& o) {
+        {{"-pq30a0.1"},
+         [](Options& o) {
+             o.poly = o.quality = o.area_limit = true;
+             o.min_angle = 30;
+             o.max_area = 0.1;
+         }},
+        {{"-p", "-q30", "-a0.1"},
+         [](Options& o) {
+             o.poly = o.quality = o.area_limit = true;
+             o.min_angle = 30;
+             o.max_area = 0.1;
+         }},
+        {{"-pq33.5a.001DYYS100o2zAevngBPNEIOXilsCQV"},
+         [](Options& o) {
              o.poly = o.quality = o.area_limit = true;
              o.min_angle = 33.5;
              o.max_area = 0.001;
@@ -137,7 +257,8 @@ TEST_CASE("parse_switches reads every switch as Triangle does", "[api][switches]
              o.check = o.quiet = true;
              o.verbosity = 1;
          }},
-        {{"-rpj2g8P0uc"}, [](Options& o) {
+        {{"-rpj2g8P0uc"},
+         [](Options& o) {
              o.refine = o.poly = o.user_test = o.convex_hull = true;
              o.threads = 2;
              o.granularity = 8;

@@ -2,6 +2,7 @@
 // Support for CLI tests: run the built gpdr in a scratch folder and look at
 // its exit status, its output streams and the files it left.
 
+#include <sys/wait.h>
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -10,7 +11,6 @@
 #include <sstream>
 #include <string>
 #include <vector>
-#include <sys/wait.h>
 
 namespace gpdr::test {
 
@@ -73,8 +73,9 @@ struct RunResult {
 inline RunResult run_program(const TempDir& dir, const fs::path& program, const std::string& args) {
     const auto out = dir / ".stdout";
     const auto err = dir / ".stderr";
-    const std::string command = "cd '" + dir.path().string() + "' && '" + program.string() + "' " + args +
-                                " >'" + out.string() + "' 2>'" + err.string() + "' </dev/null";
+    const std::string command = "cd '" + dir.path().string() + "' && '" + program.string() + "' " +
+                                args + " >'" + out.string() + "' 2>'" + err.string() +
+                                "' </dev/null";
     const int raw = std::system(command.c_str());
     RunResult r;
     r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
@@ -86,7 +87,9 @@ inline RunResult run_program(const TempDir& dir, const fs::path& program, const 
 }
 
 // Runs the built gpdr.
-inline RunResult run_gpdr(const TempDir& dir, const std::string& args) { return run_program(dir, GPDR_EXE, args); }
+inline RunResult run_gpdr(const TempDir& dir, const std::string& args) {
+    return run_program(dir, GPDR_EXE, args);
+}
 
 inline fs::path source_dir() { return GPDR_SOURCE_DIR; }
 inline fs::path project_samples() { return source_dir() / "poly-samples"; }

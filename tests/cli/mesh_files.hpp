@@ -25,11 +25,15 @@ struct MeshFiles {
         auto n = io::read_node((dir / (stem + ".node")).string(), ignore_warning);
         m.nodes = std::move(n.data);
         m.base = n.base;
-        m.triangles = io::read_ele((dir / (stem + ".ele")).string(), m.base, m.nodes.size(), ignore_warning).data;
+        m.triangles =
+            io::read_ele((dir / (stem + ".ele")).string(), m.base, m.nodes.size(), ignore_warning)
+                .data;
         return m;
     }
 
-    std::array<double, 2> point(std::uint32_t v) const { return {nodes.xy[2 * v], nodes.xy[2 * v + 1]}; }
+    std::array<double, 2> point(std::uint32_t v) const {
+        return {nodes.xy[2 * v], nodes.xy[2 * v + 1]};
+    }
     std::uint32_t corner(std::size_t t, int k) const {
         return triangles.corners[t * triangles.corners_per_triangle + static_cast<std::size_t>(k)];
     }
@@ -48,10 +52,13 @@ struct MeshFiles {
     double smallest_angle(std::size_t t) const {
         double smallest = 180;
         for (int k = 0; k < 3; ++k) {
-            const auto p = point(corner(t, k)), q = point(corner(t, (k + 1) % 3)), r = point(corner(t, (k + 2) % 3));
+            const auto p = point(corner(t, k)), q = point(corner(t, (k + 1) % 3)),
+                       r = point(corner(t, (k + 2) % 3));
             const double ux = q[0] - p[0], uy = q[1] - p[1], vx = r[0] - p[0], vy = r[1] - p[1];
-            const double cosine = (ux * vx + uy * vy) / std::sqrt((ux * ux + uy * uy) * (vx * vx + vy * vy));
-            smallest = std::min(smallest, std::acos(std::clamp(cosine, -1.0, 1.0)) * 180 / std::numbers::pi);
+            const double cosine =
+                (ux * vx + uy * vy) / std::sqrt((ux * ux + uy * uy) * (vx * vx + vy * vy));
+            smallest = std::min(smallest,
+                                std::acos(std::clamp(cosine, -1.0, 1.0)) * 180 / std::numbers::pi);
         }
         return smallest;
     }
@@ -61,7 +68,8 @@ struct MeshFiles {
     std::vector<std::array<double, 6>> canonical() const {
         std::vector<std::array<double, 6>> out;
         for (std::size_t t = 0; t < triangles.size(); ++t) {
-            std::array<std::array<double, 2>, 3> c{point(corner(t, 0)), point(corner(t, 1)), point(corner(t, 2))};
+            std::array<std::array<double, 2>, 3> c{point(corner(t, 0)), point(corner(t, 1)),
+                                                   point(corner(t, 2))};
             std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
             out.push_back({c[0][0], c[0][1], c[1][0], c[1][1], c[2][0], c[2][1]});
         }
@@ -70,6 +78,8 @@ struct MeshFiles {
     }
 };
 
-inline std::string sample_text(const std::string& name) { return TempDir::slurp(project_samples() / name); }
+inline std::string sample_text(const std::string& name) {
+    return TempDir::slurp(project_samples() / name);
+}
 
 }  // namespace gpdr::test

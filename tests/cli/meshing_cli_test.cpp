@@ -71,7 +71,8 @@ TEST_CASE("switch -pq meets the angle bound on the project's samples", "[cli][qu
     CHECK(smallest >= angle - 1e-9);
 }
 
-TEST_CASE("switch -a bounds every triangle's area; regions set attributes and bounds", "[cli][quality]") {
+TEST_CASE("switch -a bounds every triangle's area; regions set attributes and bounds",
+          "[cli][quality]") {
     TempDir dir;
     dir.write("r.poly", two_regions);
     SECTION("global bound") {
@@ -127,13 +128,15 @@ TEST_CASE("switch -c, -e, -n, -v, -o2 and -j write what Triangle writes", "[cli]
     TempDir dir;
     dir.write("p.node", sample_text("points.node"));
     require_checked(run_gpdr(dir, "-cenvo2C p.node"));
-    for (const char* f : {"p.1.node", "p.1.ele", "p.1.poly", "p.1.edge", "p.1.neigh", "p.1.v.node", "p.1.v.edge"})
+    for (const char* f :
+         {"p.1.node", "p.1.ele", "p.1.poly", "p.1.edge", "p.1.neigh", "p.1.v.node", "p.1.v.edge"})
         CHECK(dir.exists(f));
     const MeshFiles m = MeshFiles::read(dir, "p.1");
     CHECK(m.triangles.corners_per_triangle == 6);
     // A node per edge midpoint after the 500 vertices, and Euler's formula
     // for a triangulated disk: V - E + T = 1.
-    const auto edges = gpdr::io::read_edge((dir / "p.1.edge").string(), m.base, m.nodes.size(), gpdr::ignore_warning);
+    const auto edges = gpdr::io::read_edge((dir / "p.1.edge").string(), m.base, m.nodes.size(),
+                                           gpdr::ignore_warning);
     CHECK(m.nodes.size() == 500 + edges.data.size());
     CHECK(500 + m.triangles.size() == edges.data.size() + 1);
     // Every triangle, then -j on a .node with an unused (duplicate) vertex.
@@ -144,13 +147,14 @@ TEST_CASE("switch -c, -e, -n, -v, -o2 and -j write what Triangle writes", "[cli]
     CHECK(MeshFiles::read(dir, "d.1").nodes.size() == 3);
 }
 
-TEST_CASE("with several threads the output files are written side by side, the same as one thread writes",
-          "[cli][outputs][parallel]") {
+TEST_CASE(
+    "with several threads the output files are written side by side, the same as one thread writes",
+    "[cli][outputs][parallel]") {
     // No refinement, so the mesh is the same for any thread count; only the
     // files' last line (the command) differs.
     TempDir dir;
     dir.write("p.node", sample_text("points.node"));
-    const std::vector<std::string> names{"p.1.node", "p.1.ele",    "p.1.poly",   "p.1.edge",
+    const std::vector<std::string> names{"p.1.node",  "p.1.ele",    "p.1.poly",  "p.1.edge",
                                          "p.1.neigh", "p.1.v.node", "p.1.v.edge"};
     const auto without_last_line = [](std::string s) {
         s.pop_back();
@@ -171,7 +175,8 @@ TEST_CASE("with several threads the output files are written side by side, the s
     CHECK(dir.files().size() == names.size() + 1);  // no temporary file left behind
 }
 
-TEST_CASE("the statistics of -V are the same on one thread and on several", "[cli][statistics][parallel]") {
+TEST_CASE("the statistics of -V are the same on one thread and on several",
+          "[cli][statistics][parallel]") {
     // 12,000 random points: about 24,000 triangles, more than one run of
     // the statistics (16384 triangles), and no refinement, so the mesh is
     // the same for any thread count.
@@ -180,7 +185,8 @@ TEST_CASE("the statistics of -V are the same on one thread and on several", "[cl
     std::uniform_real_distribution<double> coordinate(0.0, 1.0);
     std::string node = "12000 2 0 0\n";
     for (int i = 1; i <= 12000; ++i)
-        node += std::to_string(i) + " " + std::to_string(coordinate(random)) + " " + std::to_string(coordinate(random)) + "\n";
+        node += std::to_string(i) + " " + std::to_string(coordinate(random)) + " " +
+                std::to_string(coordinate(random)) + "\n";
     dir.write("p.node", node);
     const auto statistics = [](const std::string& out) {
         const auto at = out.find("Mesh quality statistics:");
@@ -203,7 +209,8 @@ void mesh_every_sample(const std::filesystem::path& folder) {
     for (const auto& entry : std::filesystem::directory_iterator(folder)) {
         const std::string name = entry.path().filename().string();
         if (entry.path().extension() != ".poly") continue;
-        for (const char* switches : {"-pCQ", "-pcCQ", "-pDCQ", "-pcDCQ", "-pOCQ", "-pACQ", "-pcqCQ", "-pqa0.5CQ"}) {
+        for (const char* switches :
+             {"-pCQ", "-pcCQ", "-pDCQ", "-pcDCQ", "-pOCQ", "-pACQ", "-pcqCQ", "-pqa0.5CQ"}) {
             DYNAMIC_SECTION(name << " " << switches) {
                 TempDir dir;
                 std::filesystem::copy(entry.path(), dir / name);
@@ -217,7 +224,8 @@ void mesh_every_sample(const std::filesystem::path& folder) {
 
 }  // namespace
 
-TEST_CASE("Triangle's classic samples mesh with -p, -c, -D, -O, -A, -q and pass -C", "[cli][samples]") {
+TEST_CASE("Triangle's classic samples mesh with -p, -c, -D, -O, -A, -q and pass -C",
+          "[cli][samples]") {
     const auto shared = shared_samples();
     if (shared.empty()) {
         WARN("../shared/samples is absent: skipped");
@@ -230,7 +238,8 @@ TEST_CASE("the project's samples mesh with -p, -c, -D, -O, -A, -q and pass -C", 
     mesh_every_sample(project_samples());
 }
 
-TEST_CASE("switch -jN refines in parallel: the same bounds and about the same counts as -j1", "[cli][parallel]") {
+TEST_CASE("switch -jN refines in parallel: the same bounds and about the same counts as -j1",
+          "[cli][parallel]") {
     // Area bounds that give 25,000 to 40,000 triangles, so that the quadtree
     // splits and several leaves are refined at once.
     const auto [sample, area] =

@@ -117,8 +117,8 @@ TEST_CASE("switch --unsuitable grades the pipe with the paper's function", "[cli
 
     SECTION("-u with --unsuitable is the same; so is a path with a folder") {
         const std::string ele = dir.read("pipe.1.ele");
-        REQUIRE(run_gpdr(dir, "-Q -pq20uj1 --unsuitable=" + (dir / "grading.so").string() +
-                                  " pipe.poly")
+        REQUIRE(run_gpdr(dir,
+                         "-Q -pq20uj1 --unsuitable=" + (dir / "grading.so").string() + " pipe.poly")
                     .status == 0);
         CHECK(without_last_line(dir.read("pipe.1.ele")) == without_last_line(ele));
     }

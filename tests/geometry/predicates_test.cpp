@@ -195,8 +195,7 @@ TEST_CASE("predicates return zero on exactly degenerate inputs", "[geometry][pre
             std::vector<Point> g;
             for (const Point& p : grid) g.push_back(in_frame(f, p.x, p.y));
             for (int i = 0; i < 600; ++i) {
-                const Point a = g[pick(rng)], b = g[pick(rng)], c = g[pick(rng)],
-                            d = g[pick(rng)];
+                const Point a = g[pick(rng)], b = g[pick(rng)], c = g[pick(rng)], d = g[pick(rng)];
                 check.orient(a, b, c);
                 check.incircle(a, b, c, d);
             }
@@ -233,16 +232,12 @@ TEST_CASE("predicates return zero on exactly degenerate inputs", "[geometry][pre
         std::uniform_int_distribution<std::size_t> pick(0, circle.size() - 1);
         // Powers of two and integer offsets keep them exactly cocircular;
         // 1e-10 and 1e10 scales round them (then only the reference decides).
-        const std::array<Frame, 6> frames{{{0, 1},
-                                           {1e7, 1},
-                                           {0, 0x1p-33},
-                                           {0, 0x1p33},
-                                           {0, 1e-10},
-                                           {1e7, 1e10}}};
+        const std::array<Frame, 6> frames{
+            {{0, 1}, {1e7, 1}, {0, 0x1p-33}, {0, 0x1p33}, {0, 1e-10}, {1e7, 1e10}}};
         for (const Frame& f : frames) {
             for (int i = 0; i < 300; ++i) {
-                const Point a = circle[pick(rng)], b = circle[pick(rng)],
-                            c = circle[pick(rng)], d = circle[pick(rng)];
+                const Point a = circle[pick(rng)], b = circle[pick(rng)], c = circle[pick(rng)],
+                            d = circle[pick(rng)];
                 const Point fa = in_frame(f, a.x, a.y), fb = in_frame(f, b.x, b.y),
                             fc = in_frame(f, c.x, c.y), fd = in_frame(f, d.x, d.y);
                 if (f.scale == 1 || f.scale == 0x1p-33 || f.scale == 0x1p33)
@@ -306,24 +301,33 @@ TEST_CASE("predicate speed", "[.bench][geometry]") {
         std::printf("%-20s %8.2f ns/call (checksum %ld)\n", name, s * 1e9 / count, total);
     };
     const Point* p = pts.data();
-    time("orient2d naive", [p](int i) {
-        const Point &a = p[i], &b = p[i + 1], &c = p[i + 2];
-        return (a.x - c.x) * (b.y - c.y) - (a.y - c.y) * (b.x - c.x);
-    }, calls);
-    time("orient2d", [p](int i) { return orient2d(p[i], p[i + 1], p[i + 2]); }, calls);
-    time("incircle naive", [p](int i) {
-        const Point &a = p[i], &b = p[i + 1], &c = p[i + 2], &d = p[i + 3];
-        const double adx = a.x - d.x, ady = a.y - d.y, bdx = b.x - d.x, bdy = b.y - d.y,
-                     cdx = c.x - d.x, cdy = c.y - d.y;
-        return (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
-               (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
-               (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
-    }, calls);
-    time("incircle", [p](int i) { return incircle(p[i], p[i + 1], p[i + 2], p[i + 3]); },
-         calls);
-    time("orient2d_exact", [p](int i) { return orient2d_exact(p[i], p[i + 1], p[i + 2]); },
-         calls / 10);
-    time("incircle_exact",
-         [p](int i) { return incircle_exact(p[i], p[i + 1], p[i + 2], p[i + 3]); }, calls / 100);
+    time(
+        "orient2d naive",
+        [p](int i) {
+            const Point &a = p[i], &b = p[i + 1], &c = p[i + 2];
+            return (a.x - c.x) * (b.y - c.y) - (a.y - c.y) * (b.x - c.x);
+        },
+        calls);
+    time(
+        "orient2d", [p](int i) { return orient2d(p[i], p[i + 1], p[i + 2]); }, calls);
+    time(
+        "incircle naive",
+        [p](int i) {
+            const Point &a = p[i], &b = p[i + 1], &c = p[i + 2], &d = p[i + 3];
+            const double adx = a.x - d.x, ady = a.y - d.y, bdx = b.x - d.x, bdy = b.y - d.y,
+                         cdx = c.x - d.x, cdy = c.y - d.y;
+            return (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
+                   (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
+                   (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
+        },
+        calls);
+    time(
+        "incircle", [p](int i) { return incircle(p[i], p[i + 1], p[i + 2], p[i + 3]); }, calls);
+    time(
+        "orient2d_exact", [p](int i) { return orient2d_exact(p[i], p[i + 1], p[i + 2]); },
+        calls / 10);
+    time(
+        "incircle_exact", [p](int i) { return incircle_exact(p[i], p[i + 1], p[i + 2], p[i + 3]); },
+        calls / 100);
     SUCCEED();
 }

@@ -47,7 +47,8 @@ TEST_CASE("commit renames all files into place and leaves no temporaries", "[io]
     tx.commit();
     CHECK(dir.files() == std::vector<std::string>{"m.ele", "m.node"});
     CHECK(dir.read("m.node").rfind("3  2  0  0\n", 0) == 0);
-    CHECK(tx.files() == std::vector<std::string>{(dir / "m.node").string(), (dir / "m.ele").string()});
+    CHECK(tx.files() ==
+          std::vector<std::string>{(dir / "m.node").string(), (dir / "m.ele").string()});
 }
 
 TEST_CASE("a failed transaction keeps earlier files and removes its temporaries", "[io][atomic]") {
@@ -58,8 +59,7 @@ TEST_CASE("a failed transaction keeps earlier files and removes its temporaries"
         io::write_node(tx, (dir / "m.node").string(), tiny_nodes(), {1, true, "gpdr m"});
         io::write_ele(tx, (dir / "m.ele").string(), tiny_ele(), {1, true, "gpdr m"});
         throw std::runtime_error("the mesher failed");
-    } catch (const std::runtime_error&) {
-    }
+    } catch (const std::runtime_error&) {}
     CHECK(dir.files() == std::vector<std::string>{"m.node"});
     CHECK(dir.read("m.node") == "earlier result");
 }
@@ -102,7 +102,9 @@ TEST_CASE("a write error (file too large) gives OutputError naming the file", "[
     REQUIRE(pid >= 0);
     if (pid == 0) {
         std::signal(SIGXFSZ, SIG_IGN);
-        struct rlimit limit {4096, 4096};
+        struct rlimit limit {
+            4096, 4096
+        };
         ::setrlimit(RLIMIT_FSIZE, &limit);
         NodeSet many;
         many.xy.assign(20000, 0.5);

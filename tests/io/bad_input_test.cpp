@@ -18,7 +18,8 @@ using gpdr::test::TempDir;
 
 namespace {
 
-void write_files(const TempDir& dir, const std::vector<std::pair<std::string, std::string>>& files) {
+void write_files(const TempDir& dir,
+                 const std::vector<std::pair<std::string, std::string>>& files) {
     for (const auto& [name, contents] : files) dir.write(name, contents);
 }
 
@@ -131,7 +132,9 @@ TEST_CASE("Triangle's defaults for values a line leaves out", "[io][defaults]") 
 
     // A region with one value after x y uses it as attribute and area bound;
     // a missing segment marker is 0; no region section at all is fine.
-    dir.write("c.poly", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n2 1\n1 1 2\n2 2 3 4\n0\n2\n1 0.2 0.2 5\n2 0.1 0.1 6 -1\n");
+    dir.write(
+        "c.poly",
+        "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n2 1\n1 1 2\n2 2 3 4\n0\n2\n1 0.2 0.2 5\n2 0.1 0.1 6 -1\n");
     const auto c = io::read_poly((dir / "c.poly").string(), ignore_warning);
     CHECK(c.data.segments.markers == std::vector<int>{0, 4});
     REQUIRE(c.data.regions.size() == 2);

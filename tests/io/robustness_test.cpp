@@ -49,9 +49,9 @@ bool try_read(const TempDir& dir, const std::string& name) {
 
 TEST_CASE("every prefix of a valid file reads or gives InputError", "[io][robustness]") {
     TempDir dir;
-    for (const auto& [name, text] : {std::pair{std::string("p.poly"), poly_text},
-                                     std::pair{std::string("n.node"), node_text},
-                                     std::pair{std::string("e.ele"), ele_text}}) {
+    for (const auto& [name, text] :
+         {std::pair{std::string("p.poly"), poly_text}, std::pair{std::string("n.node"), node_text},
+          std::pair{std::string("e.ele"), ele_text}}) {
         std::size_t ok = 0;
         for (std::size_t len = 0; len <= text.size(); ++len) {
             std::filesystem::remove(dir / name);
@@ -73,9 +73,16 @@ TEST_CASE("randomly damaged files read or give InputError", "[io][robustness]") 
         for (int k = 0; k < edits; ++k) {
             const std::size_t at = rng() % text.size();
             switch (rng() % 3) {
-                case 0: text[at] = alphabet[rng() % alphabet.size()]; break;
-                case 1: text.erase(at, 1 + rng() % 3); break;
-                default: text.insert(text.begin() + static_cast<std::ptrdiff_t>(at), alphabet[rng() % alphabet.size()]); break;
+                case 0:
+                    text[at] = alphabet[rng() % alphabet.size()];
+                    break;
+                case 1:
+                    text.erase(at, 1 + rng() % 3);
+                    break;
+                default:
+                    text.insert(text.begin() + static_cast<std::ptrdiff_t>(at),
+                                alphabet[rng() % alphabet.size()]);
+                    break;
             }
             if (text.empty()) text.push_back('\n');
         }

@@ -44,7 +44,8 @@ TEST_CASE("every classic sample reads without error", "[io][samples]") {
             io::OutputTransaction tx;
             io::write_poly(tx, out, r.data, {r.base, true, "gpdr test"});
             if (r.data.nodes_from_node_file)
-                io::write_node(tx, (dir / "copy.node").string(), r.data.nodes, {r.base, true, "gpdr test"});
+                io::write_node(tx, (dir / "copy.node").string(), r.data.nodes,
+                               {r.base, true, "gpdr test"});
             tx.commit();
             const auto back = io::read_poly(out, ignore_warning);
             CHECK(back.base == r.base);

@@ -26,7 +26,9 @@ bool mentions(const std::vector<std::string>& problems, const std::string& what)
 
 }  // namespace
 
-TEST_CASE("the checker accepts a valid mesh", "[mesh][checker]") { CHECK(check_mesh(four()).empty()); }
+TEST_CASE("the checker accepts a valid mesh", "[mesh][checker]") {
+    CHECK(check_mesh(four()).empty());
+}
 
 TEST_CASE("the checker finds broken meshes", "[mesh][checker]") {
     Mesh mesh = four();
@@ -62,7 +64,8 @@ TEST_CASE("the checker finds broken meshes", "[mesh][checker]") {
     SECTION("not Delaunay") {
         // A kite split along its long diagonal: each apex lies inside the
         // other triangle's circumcircle.
-        const Mesh kite = mesh_from_triangles({{0, 0}, {1, -0.3}, {2, 0}, {1, 0.3}}, {{0, 1, 2}, {0, 2, 3}});
+        const Mesh kite =
+            mesh_from_triangles({{0, 0}, {1, -0.3}, {2, 0}, {1, 0.3}}, {{0, 1, 2}, {0, 2, 3}});
         const auto problems = check_mesh(kite);
         CHECK(mentions(problems, "edge 2-0 is not locally Delaunay: vertex 3"));
         CheckOptions topology_only;
@@ -85,7 +88,8 @@ TEST_CASE("the checker finds broken meshes", "[mesh][checker]") {
     }
     SECTION("side table entry with no flagged edge") {
         mesh.subsegments().set(VertexId{0}, VertexId{2}, {});
-        CHECK(mentions(check_mesh(mesh), "the side table holds 1 subsegments but 0 edges are flagged"));
+        CHECK(mentions(check_mesh(mesh),
+                       "the side table holds 1 subsegments but 0 edges are flagged"));
     }
     SECTION("repeated vertex") {
         r.v[2] = r.v[0];

@@ -97,7 +97,8 @@ TEST_CASE("a flip repairs a non-Delaunay edge", "[mesh][flip]") {
     CHECK(canonical(mesh) == std::vector<Tri>{{0, 1, 3}, {1, 2, 3}});
 }
 
-TEST_CASE("Lawson's flips save the tagged triangles they change and clear their tags", "[mesh][flip]") {
+TEST_CASE("Lawson's flips save the tagged triangles they change and clear their tags",
+          "[mesh][flip]") {
     // The kite's diagonal 0-2 is not locally Delaunay; the flip from the
     // "created" triangle 0-1-2 changes it and the triangle beyond.
     const std::vector<Point> kite{{0, 0}, {1, -0.3}, {2, 0}, {1, 0.3}};

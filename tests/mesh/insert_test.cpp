@@ -90,7 +90,8 @@ TEST_CASE("a point on an interior edge splits both triangles", "[mesh][insert]")
     Mesh mesh = square_mesh();
     Pool pool(mesh);
     InsertBuffer buffer;
-    const InsertResult r = insert_point(pool, {0.5, 0.5}, VertexKind::free, find_triangle(mesh, 0, 1, 2), buffer);
+    const InsertResult r =
+        insert_point(pool, {0.5, 0.5}, VertexKind::free, find_triangle(mesh, 0, 1, 2), buffer);
     REQUIRE(r.status == InsertStatus::inserted);
     CHECK(canonical(mesh) == std::vector<Tri>{{0, 1, 4}, {0, 4, 3}, {1, 2, 4}, {2, 3, 4}});
     CHECK(check_mesh(mesh).empty());
@@ -100,7 +101,8 @@ TEST_CASE("a point on a hull edge stays on the hull", "[mesh][insert]") {
     Mesh mesh = square_mesh();
     Pool pool(mesh);
     InsertBuffer buffer;
-    const InsertResult r = insert_point(pool, {0.5, 0}, VertexKind::free, find_triangle(mesh, 0, 2, 3), buffer);
+    const InsertResult r =
+        insert_point(pool, {0.5, 0}, VertexKind::free, find_triangle(mesh, 0, 2, 3), buffer);
     REQUIRE(r.status == InsertStatus::inserted);
     CHECK(check_mesh(mesh).empty());
     CHECK(mesh.count_triangles() == 3);
@@ -161,7 +163,8 @@ TEST_CASE("a point equal to a vertex is a duplicate", "[mesh][insert]") {
     Pool pool(mesh);
     InsertBuffer buffer;
     const auto before = canonical(mesh);
-    InsertResult r = insert_point(pool, {1, 1}, VertexKind::free, find_triangle(mesh, 0, 2, 3), buffer);
+    InsertResult r =
+        insert_point(pool, {1, 1}, VertexKind::free, find_triangle(mesh, 0, 2, 3), buffer);
     CHECK(r.status == InsertStatus::duplicate);
     CHECK(r.vertex == VertexId{2});
     const VertexId copy = mesh.add_vertex({0, 1}, VertexKind::input);
@@ -176,7 +179,8 @@ TEST_CASE("a point outside a mesh without ghosts is refused", "[mesh][insert]") 
     Pool pool(mesh);
     InsertBuffer buffer;
     const auto before = canonical(mesh);
-    const InsertResult r = insert_point(pool, {2, 0.5}, VertexKind::free, find_triangle(mesh, 0, 2, 3), buffer);
+    const InsertResult r =
+        insert_point(pool, {2, 0.5}, VertexKind::free, find_triangle(mesh, 0, 2, 3), buffer);
     CHECK(r.status == InsertStatus::outside);
     REQUIRE_FALSE(r.edge.is_none());
     CHECK(mesh.neighbour(r.edge).is_none());

@@ -21,22 +21,23 @@ void verify(const Mesh& mesh, const Point& p, const LocateResult& r) {
     const Triangle& t = mesh.triangle(r.triangle);
     REQUIRE(t.live());
     double o[3];
-    for (int k = 0; k < 3; ++k) o[k] = orient2d(mesh.point(t.v[next3(k)]), mesh.point(t.v[prev3(k)]), p);
+    for (int k = 0; k < 3; ++k)
+        o[k] = orient2d(mesh.point(t.v[next3(k)]), mesh.point(t.v[prev3(k)]), p);
     switch (r.where) {
-    case Location::inside:
-        CHECK((o[0] > 0 && o[1] > 0 && o[2] > 0));
-        break;
-    case Location::on_edge:
-        CHECK(o[r.index] == 0);
-        CHECK((o[next3(r.index)] > 0 && o[prev3(r.index)] > 0));
-        break;
-    case Location::on_vertex:
-        CHECK(mesh.point(t.v[r.index]) == p);
-        break;
-    case Location::outside:
-        CHECK(o[r.index] < 0);
-        CHECK(t.n[r.index].is_none());
-        break;
+        case Location::inside:
+            CHECK((o[0] > 0 && o[1] > 0 && o[2] > 0));
+            break;
+        case Location::on_edge:
+            CHECK(o[r.index] == 0);
+            CHECK((o[next3(r.index)] > 0 && o[prev3(r.index)] > 0));
+            break;
+        case Location::on_vertex:
+            CHECK(mesh.point(t.v[r.index]) == p);
+            break;
+        case Location::outside:
+            CHECK(o[r.index] < 0);
+            CHECK(t.n[r.index].is_none());
+            break;
     }
 }
 
@@ -91,7 +92,8 @@ TEST_CASE("walks terminate on a fan that is far from Delaunay", "[mesh][locate]"
     }
     std::vector<Tri> triangles;
     // Along y = x^2 from left to right the polygon is counter-clockwise.
-    for (std::uint32_t i = 1; i + 1 < static_cast<std::uint32_t>(n); ++i) triangles.push_back({0, i, i + 1});
+    for (std::uint32_t i = 1; i + 1 < static_cast<std::uint32_t>(n); ++i)
+        triangles.push_back({0, i, i + 1});
     const Mesh mesh = mesh_from_triangles(points, triangles);
     const auto ids = all_triangles(mesh);
     std::mt19937 rng(5);

@@ -65,7 +65,8 @@ TEST_CASE("pools claim distinct chunks and hand spare slots on", "[mesh][pool]")
     // A new pool starts from what the finished ones gave back: no new chunk.
     Pool p3(mesh);
     std::set<std::uint32_t> again;
-    for (int i = 0; i < 1000; ++i) again.insert(index(p3.create(VertexId{0}, VertexId{1}, VertexId{2})));
+    for (int i = 0; i < 1000; ++i)
+        again.insert(index(p3.create(VertexId{0}, VertexId{1}, VertexId{2})));
     CHECK(mesh.triangle_end() == 2 * Mesh::TriangleTable::chunk_size);
     CHECK(mesh.count_triangles() == 1199);
     CHECK(again.size() == 1000);
@@ -103,7 +104,10 @@ TEST_CASE("pool vertices get consecutive ids and the unused block is returned", 
 TEST_CASE("a moved mesh keeps its triangles and vertices", "[mesh][pool]") {
     Mesh mesh;
     mesh.add_vertices(std::vector<Point>{{0, 0}, {1, 0}, {0, 1}}, VertexKind::input);
-    { Pool pool(mesh); pool.create(VertexId{0}, VertexId{1}, VertexId{2}); }
+    {
+        Pool pool(mesh);
+        pool.create(VertexId{0}, VertexId{1}, VertexId{2});
+    }
     Mesh moved(std::move(mesh));
     CHECK(moved.count_triangles() == 1);
     CHECK(moved.point(VertexId{1}) == Point{1, 0});
@@ -136,7 +140,8 @@ TEST_CASE("pools on several threads allocate in one mesh at once", "[mesh][pool]
                         made[static_cast<std::size_t>(w)].pop_back();
                     }
                     if (i % 1000 == 0)
-                        vertices[static_cast<std::size_t>(w)].push_back(pool.new_vertex({double(w), double(i)}, VertexKind::free));
+                        vertices[static_cast<std::size_t>(w)].push_back(
+                            pool.new_vertex({double(w), double(i)}, VertexKind::free));
                 }
             });
         for (auto& t : workers) t.join();
@@ -149,7 +154,8 @@ TEST_CASE("pools on several threads allocate in one mesh at once", "[mesh][pool]
         }
     CHECK(mesh.count_triangles() == ids.size());
     for (int w = 0; w < threads; ++w)
-        for (VertexId v : vertices[static_cast<std::size_t>(w)]) CHECK(mesh.point(v).x == double(w));
+        for (VertexId v : vertices[static_cast<std::size_t>(w)])
+            CHECK(mesh.point(v).x == double(w));
 }
 
 TEST_CASE("destroying a dead triangle is refused", "[mesh][pool]") {

@@ -22,18 +22,21 @@ using Tri = std::array<std::uint32_t, 3>;
 
 // A mesh with these points (ids = indices) and triangles (counter-clockwise
 // corner indices); neighbours are linked through shared edges.
-inline Mesh mesh_from_triangles(const std::vector<Point>& points, const std::vector<Tri>& triangles) {
+inline Mesh mesh_from_triangles(const std::vector<Point>& points,
+                                const std::vector<Tri>& triangles) {
     Mesh mesh;
     mesh.add_vertices(points, VertexKind::input);
     Pool pool(mesh);
-    std::map<std::pair<std::uint32_t, std::uint32_t>, EdgeRef> by_edge;  // directed edge -> its triangle edge
+    std::map<std::pair<std::uint32_t, std::uint32_t>, EdgeRef>
+        by_edge;  // directed edge -> its triangle edge
     for (const Tri& t : triangles) {
         const TriangleId id = pool.create(VertexId{t[0]}, VertexId{t[1]}, VertexId{t[2]});
         for (int k = 0; k < 3; ++k) {
             const std::uint32_t from = t[static_cast<std::size_t>(next3(k))];
             const std::uint32_t to = t[static_cast<std::size_t>(prev3(k))];
             by_edge[{from, to}] = EdgeRef(id, k);
-            if (auto it = by_edge.find({to, from}); it != by_edge.end()) mesh.link(EdgeRef(id, k), it->second);
+            if (auto it = by_edge.find({to, from}); it != by_edge.end())
+                mesh.link(EdgeRef(id, k), it->second);
         }
     }
     return mesh;
@@ -60,7 +63,8 @@ inline std::vector<Point> uniform_points(std::size_t n, std::uint32_t seed) {
 }
 
 // The triangle of `mesh` whose corner set is {a, b, c}, or no_triangle.
-inline TriangleId find_triangle(const Mesh& mesh, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+inline TriangleId find_triangle(const Mesh& mesh, std::uint32_t a, std::uint32_t b,
+                                std::uint32_t c) {
     TriangleId found = no_triangle;
     for_each_triangle(mesh, [&](TriangleId id, const Triangle& t) {
         std::array<std::uint32_t, 3> x{index(t.v[0]), index(t.v[1]), index(t.v[2])}, y{a, b, c};

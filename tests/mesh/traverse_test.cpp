@@ -21,7 +21,8 @@ TEST_CASE("edges are visited once each, hull edges flagged", "[mesh][traverse]")
     std::set<std::pair<std::uint32_t, std::uint32_t>> seen;
     int hull = 0, subsegments = 0;
     for_each_edge(mesh, [&](const EdgeView& e) {
-        const auto a = std::min(index(e.from), index(e.to)), b = std::max(index(e.from), index(e.to));
+        const auto a = std::min(index(e.from), index(e.to)),
+                   b = std::max(index(e.from), index(e.to));
         CHECK(seen.insert({a, b}).second);
         CHECK(e.hull == (b != 4));
         CHECK(mesh.origin(e.edge) == e.from);
@@ -48,6 +49,7 @@ TEST_CASE("triangle numbering skips dead slots", "[mesh][traverse]") {
     const auto number = number_triangles(mesh);
     CHECK(number[index(dead)] == not_numbered);
     std::vector<std::uint32_t> seen;
-    for_each_triangle(mesh, [&](TriangleId id, const Triangle&) { seen.push_back(number[index(id)]); });
+    for_each_triangle(mesh,
+                      [&](TriangleId id, const Triangle&) { seen.push_back(number[index(id)]); });
     CHECK(seen == std::vector<std::uint32_t>{0, 1, 2});
 }

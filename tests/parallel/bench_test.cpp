@@ -30,9 +30,9 @@ TEST_CASE("parallel refinement speed on a large square", "[.bench][parallel]") {
         unsigned threads, g;
         bool one_leaf;
     };
-    const Case cases[] = {{"-j1 (one leaf)", 1, 2, true}, {"-j1 quadtree -g2", 1, 2, false},
+    const Case cases[] = {{"-j1 (one leaf)", 1, 2, true},    {"-j1 quadtree -g2", 1, 2, false},
                           {"-j1 quadtree -g4", 1, 4, false}, {"-j2 -g1", 2, 1, false},
-                          {"-j2 -g2", 2, 2, false},       {"-j2 -g3", 2, 3, false},
+                          {"-j2 -g2", 2, 2, false},          {"-j2 -g3", 2, 3, false},
                           {"-j2 -g4", 2, 4, false}};
     double base = 0;
     const char* only = std::getenv("GPDR_BENCH_CASE");  // run one case (by its index) only
@@ -43,7 +43,8 @@ TEST_CASE("parallel refinement speed on a large square", "[.bench][parallel]") {
         double sec = 1e300;
         std::size_t triangles = 0;
         ParallelReport r;
-        const int repeats = std::getenv("GPDR_BENCH_REPEAT") ? std::atoi(std::getenv("GPDR_BENCH_REPEAT")) : 3;
+        const int repeats =
+            std::getenv("GPDR_BENCH_REPEAT") ? std::atoi(std::getenv("GPDR_BENCH_REPEAT")) : 3;
         for (int repeat = 0; repeat < repeats; ++repeat) {
             mesh::Mesh m = refine::testing::cdt(p);
             ParallelOptions o;
@@ -53,7 +54,8 @@ TEST_CASE("parallel refinement speed on a large square", "[.bench][parallel]") {
             ParallelReport run;
             const auto t0 = std::chrono::steady_clock::now();
             refine_parallel(m, s, o, run);
-            const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            const double t =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
             if (t < sec) {
                 sec = t;
                 r = std::move(run);
@@ -63,12 +65,13 @@ TEST_CASE("parallel refinement speed on a large square", "[.bench][parallel]") {
         if (base == 0) base = sec;
         std::string workers;
         for (const auto& w : r.workers)
-            workers += " [refine " + std::to_string(w.refining) + " manage " + std::to_string(w.managing) + " wait " +
-                       std::to_string(w.waiting) + "]";
+            workers += " [refine " + std::to_string(w.refining) + " manage " +
+                       std::to_string(w.managing) + " wait " + std::to_string(w.waiting) + "]";
         WARN(c.name << ": " << triangles << " triangles, " << sec << " s (" << sec / base
-                    << " of -j1), leaves " << r.leaves << ", assignments " << r.assignments << ", most concurrent "
-                    << r.most_concurrent << ", (9) exceptions " << r.relation9_exceptions << ", master [manage "
-                    << r.master.managing << " wait " << r.master.waiting << "]" << workers);
+                    << " of -j1), leaves " << r.leaves << ", assignments " << r.assignments
+                    << ", most concurrent " << r.most_concurrent << ", (9) exceptions "
+                    << r.relation9_exceptions << ", master [manage " << r.master.managing
+                    << " wait " << r.master.waiting << "]" << workers);
         CHECK(r.refine.left_other == 0);
     }
 }

@@ -32,7 +32,8 @@ struct AheadLog {
     void near(const DeferredTriangle& e) {
         const std::uint32_t i = mesh::index(e.t);
         if (std::find(shown.begin(), shown.end(), i) == shown.end() ||
-            std::find(near_shown.begin(), near_shown.end(), i) != near_shown.end() || (i < read.size() && read[i]))
+            std::find(near_shown.begin(), near_shown.end(), i) != near_shown.end() ||
+            (i < read.size() && read[i]))
             near_right = false;
         near_shown.push_back(i);
     }
@@ -63,7 +64,8 @@ TEST_CASE("deferred lists keep and drain what a vector would", "[parallel][defer
     BlockPool pool;
     DeferredList list;
     std::vector<std::uint32_t> expected;
-    const std::uint32_t n = 3 * DeferredBlock::capacity + 17;  // several blocks, the last one partial
+    const std::uint32_t n =
+        3 * DeferredBlock::capacity + 17;  // several blocks, the last one partial
     for (std::uint32_t i = 0; i < n; ++i) {
         list.push({mesh::TriangleId{i}, i % 7}, pool);
         expected.push_back(i);
@@ -81,14 +83,16 @@ TEST_CASE("deferred lists keep and drain what a vector would", "[parallel][defer
             drained.push_back(mesh::index(e.t));
             (mesh::index(e.t) % 2 == 0 ? even : odd).push(e, pool);
         },
-        [&](const DeferredTriangle& e) { shown.show(e); }, [&](const DeferredTriangle& e) { shown.near(e); }, pool);
+        [&](const DeferredTriangle& e) { shown.show(e); },
+        [&](const DeferredTriangle& e) { shown.near(e); }, pool);
     std::sort(drained.begin(), drained.end());
     CHECK(drained == expected);
     CHECK(shown.sorted_shown() == expected);
     CHECK(shown.early);
     CHECK(shown.near_right);
     // All but the first look_near entries of each block (a few blocks here).
-    const std::size_t blocks = (expected.size() + DeferredBlock::capacity - 1) / DeferredBlock::capacity + 1;
+    const std::size_t blocks =
+        (expected.size() + DeferredBlock::capacity - 1) / DeferredBlock::capacity + 1;
     CHECK(shown.near_shown.size() + blocks * look_near >= expected.size());
     CHECK(list.size() == 0);
     CHECK(even.size() + odd.size() == expected.size());
@@ -139,14 +143,16 @@ TEST_CASE("a deferred list takes over another's entries", "[parallel][deferred]"
 
 // The child a split picks from an entry's quadrant path is the child whose
 // square holds the point, level after level, as long as the path lasts.
-TEST_CASE("a queue entry's quadrant path follows the quadtree's child squares", "[parallel][deferred]") {
+TEST_CASE("a queue entry's quadrant path follows the quadtree's child squares",
+          "[parallel][deferred]") {
     Quadtree tree(-3.25, 10.5, 7.0);
     NodeAllocator alloc;
     std::mt19937_64 random(12345);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     const Square root = tree.square(Quadtree::root());
     for (int trial = 0; trial < 2000; ++trial) {
-        const geometry::Point p{root.x0 + unit(random) * root.side, root.y0 + unit(random) * root.side};
+        const geometry::Point p{root.x0 + unit(random) * root.side,
+                                root.y0 + unit(random) * root.side};
         refine::Leaf leaf(root.side);
         leaf.set_corner({root.x0, root.y0});
         std::uint32_t where = leaf.where(p);
@@ -171,7 +177,8 @@ TEST_CASE("a queue entry's quadrant path follows the quadtree's child squares", 
 // ℓ_k > 4r for the level k that level_of gives, and ℓ_(k+1) > 4r fails
 // but for the 2^-30 it gives away; the ends: -1 for r >= ℓ_root / 4 and
 // max_level + 1 below the deepest level (and for zero, negative, NaN).
-TEST_CASE("level_of is the deepest level whose side exceeds 4r, but for a relative 2^-30", "[parallel][deferred]") {
+TEST_CASE("level_of is the deepest level whose side exceeds 4r, but for a relative 2^-30",
+          "[parallel][deferred]") {
     std::mt19937_64 random(99);
     std::uniform_real_distribution<double> exponent(-2.0, 34.0);
     for (const double side : {3.0, 7.0, 1e-3, 12345.678, 0.1}) {
@@ -248,8 +255,10 @@ TEST_CASE("disk_inside is exact but for a hair, on the safe side", "[parallel][d
             const geometry::Point c{s.x0 + (1.2 * unit(random) - 0.1) * s.side,
                                     s.y0 + (1.2 * unit(random) - 0.1) * s.side};
             const double r = unit(random) * unit(random) * s.side;
-            const long double lo_x = (long double)c.x - s.x0, hi_x = (long double)s.x0 + s.side - c.x;
-            const long double lo_y = (long double)c.y - s.y0, hi_y = (long double)s.y0 + s.side - c.y;
+            const long double lo_x = (long double)c.x - s.x0,
+                              hi_x = (long double)s.x0 + s.side - c.x;
+            const long double lo_y = (long double)c.y - s.y0,
+                              hi_y = (long double)s.y0 + s.side - c.y;
             const long double gap = std::min({lo_x, hi_x, lo_y, hi_y}) - (long double)r;
             const bool inside = tree.disk_inside(room, c, r * r);
             if (inside) REQUIRE(gap > 0);

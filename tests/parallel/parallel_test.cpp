@@ -36,8 +36,8 @@ refine::RefineSettings settings_for(double angle, double area) {
 // A square with a square hole and an acute notch (small input angle).
 triangulate::Pslg notched_square() {
     triangulate::Pslg p;
-    p.points = {{0, 0}, {4, 0}, {4, 4}, {2.2, 4}, {2, 1.5}, {1.8, 4}, {0, 4},
-                {1, 2.5}, {1.5, 2.5}, {1.5, 3}, {1, 3}};
+    p.points = {{0, 0}, {4, 0},   {4, 4},     {2.2, 4}, {2, 1.5}, {1.8, 4},
+                {0, 4}, {1, 2.5}, {1.5, 2.5}, {1.5, 3}, {1, 3}};
     p.segments = {0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 0, 7, 8, 8, 9, 9, 10, 10, 7};
     p.holes = {{1.25, 2.75}};
     return p;
@@ -66,8 +66,8 @@ struct Result {
     std::size_t vertices = 0;
 };
 
-Result refine_checked(mesh::Mesh& m, const refine::RefineSettings& s, unsigned threads, unsigned g, bool checked,
-                      ParallelReport* out = nullptr) {
+Result refine_checked(mesh::Mesh& m, const refine::RefineSettings& s, unsigned threads, unsigned g,
+                      bool checked, ParallelReport* out = nullptr) {
     ParallelOptions o;
     o.threads = threads;
     o.granularity = g;
@@ -100,7 +100,8 @@ TEST_CASE("parallel refinement of a point set matches -j1's bounds and size", "[
             mesh::Mesh m = point_set_mesh(points);
             ParallelReport report;
             const Result r = refine_checked(m, s, threads, g, true, &report);
-            INFO("threads " << threads << " g " << g << ": " << r.triangles << " triangles vs " << reference);
+            INFO("threads " << threads << " g " << g << ": " << r.triangles << " triangles vs "
+                            << reference);
             CHECK(std::abs(double(r.triangles) - reference) < 0.05 * reference);
             CHECK(report.checks > 0);
             CHECK(report.splits > 0);
@@ -127,7 +128,8 @@ TEST_CASE("parallel refinement of a PSLG with a hole and a small angle", "[paral
     }
 }
 
-TEST_CASE("idle leaves beside the leaves refined split too, and every invariant holds", "[parallel]") {
+TEST_CASE("idle leaves beside the leaves refined split too, and every invariant holds",
+          "[parallel]") {
     // The root square is several times the unit square's size: the space
     // around the domain is large leaves that never get work, which the
     // workers refining the domain's edge split (Scheduler::take_balance_candidates).
@@ -139,7 +141,8 @@ TEST_CASE("idle leaves beside the leaves refined split too, and every invariant 
         mesh::Mesh m = cdt(p);
         ParallelReport report;
         refine_checked(m, s, threads, 1, true, &report);
-        INFO("threads " << threads << ": " << report.splits << " splits, " << report.checks << " checks");
+        INFO("threads " << threads << ": " << report.splits << " splits, " << report.checks
+                        << " checks");
         CHECK(report.checks > 0);
         CHECK(report.balance_splits > 0);
         CHECK(report.balance_splits < report.splits);
@@ -183,14 +186,18 @@ TEST_CASE("stress: random point sets and PSLGs, -j2..-j8, -g1..-g5", "[parallel]
         const unsigned g = 1 + rng() % 5;
         const double angle = 20 + (rng() % 14);
         const bool pslg = i % 2 == 1;
-        mesh::Mesh m = pslg ? cdt(random_pslg(static_cast<std::uint32_t>(i)))
-                            : point_set_mesh(random_points(20 + rng() % 150, static_cast<std::uint32_t>(i)));
+        mesh::Mesh m =
+            pslg ? cdt(random_pslg(static_cast<std::uint32_t>(i)))
+                 : point_set_mesh(random_points(20 + rng() % 150, static_cast<std::uint32_t>(i)));
         const double area = pslg ? 2e-3 + 1e-3 * (rng() % 5) : 1e-3 + 1e-3 * (rng() % 3);
-        if (const char* only = std::getenv("GPDR_STRESS_ONLY"); only && std::atoi(only) != i) continue;
-        INFO("run " << i << (pslg ? " pslg" : " points") << " -j" << threads << " -g" << g << " -q" << angle);
+        if (const char* only = std::getenv("GPDR_STRESS_ONLY"); only && std::atoi(only) != i)
+            continue;
+        INFO("run " << i << (pslg ? " pslg" : " points") << " -j" << threads << " -g" << g << " -q"
+                    << angle);
         // The quadtree verification after every leaf on one run in four.
         const char* jt = std::getenv("GPDR_STRESS_THREADS");
-        refine_checked(m, settings_for(angle, area), jt ? unsigned(std::atoi(jt)) : threads, g, i % 4 == 0);
+        refine_checked(m, settings_for(angle, area), jt ? unsigned(std::atoi(jt)) : threads, g,
+                       i % 4 == 0);
         ++runs;
     }
     if (!std::getenv("GPDR_STRESS_ONLY")) CHECK(runs == 240);

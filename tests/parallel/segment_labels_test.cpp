@@ -19,9 +19,10 @@ using Key = std::pair<std::uint32_t, std::uint32_t>;
 
 std::map<Key, std::uint32_t> segment_indices(const mesh::Mesh& m) {
     std::map<Key, std::uint32_t> out;
-    m.subsegments().for_each([&](mesh::VertexId a, mesh::VertexId b, const mesh::SubsegmentInfo& info) {
-        out[{mesh::index(a), mesh::index(b)}] = info.segment;
-    });
+    m.subsegments().for_each(
+        [&](mesh::VertexId a, mesh::VertexId b, const mesh::SubsegmentInfo& info) {
+            out[{mesh::index(a), mesh::index(b)}] = info.segment;
+        });
     return out;
 }
 
@@ -29,23 +30,24 @@ std::map<Key, std::uint32_t> segment_indices(const mesh::Mesh& m) {
 // (collinear, inside the ends' box).
 void check_labels(const mesh::Mesh& m, const SegmentLabels& labels) {
     const auto ends = labels.ends();
-    m.subsegments().for_each([&](mesh::VertexId a, mesh::VertexId b, const mesh::SubsegmentInfo& info) {
-        REQUIRE(info.segment != mesh::SubsegmentInfo::no_segment);
-        REQUIRE(2 * std::size_t{info.segment} + 1 < ends.size());
-        const geometry::Point& p = m.point(ends[2 * info.segment]);
-        const geometry::Point& q = m.point(ends[2 * info.segment + 1]);
-        for (const mesh::VertexId v : {a, b}) {
-            const geometry::Point& x = m.point(v);
-            // Split points are rounded: nearly collinear, not exactly.
-            const double cross = (q.x - p.x) * (x.y - p.y) - (q.y - p.y) * (x.x - p.x);
-            const double len2 = (q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y);
-            CHECK(cross * cross <= 1e-20 * len2 * len2);
-            CHECK(x.x >= std::min(p.x, q.x) - 1e-12);
-            CHECK(x.x <= std::max(p.x, q.x) + 1e-12);
-            CHECK(x.y >= std::min(p.y, q.y) - 1e-12);
-            CHECK(x.y <= std::max(p.y, q.y) + 1e-12);
-        }
-    });
+    m.subsegments().for_each(
+        [&](mesh::VertexId a, mesh::VertexId b, const mesh::SubsegmentInfo& info) {
+            REQUIRE(info.segment != mesh::SubsegmentInfo::no_segment);
+            REQUIRE(2 * std::size_t{info.segment} + 1 < ends.size());
+            const geometry::Point& p = m.point(ends[2 * info.segment]);
+            const geometry::Point& q = m.point(ends[2 * info.segment + 1]);
+            for (const mesh::VertexId v : {a, b}) {
+                const geometry::Point& x = m.point(v);
+                // Split points are rounded: nearly collinear, not exactly.
+                const double cross = (q.x - p.x) * (x.y - p.y) - (q.y - p.y) * (x.x - p.x);
+                const double len2 = (q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y);
+                CHECK(cross * cross <= 1e-20 * len2 * len2);
+                CHECK(x.x >= std::min(p.x, q.x) - 1e-12);
+                CHECK(x.x <= std::max(p.x, q.x) + 1e-12);
+                CHECK(x.y >= std::min(p.y, q.y) - 1e-12);
+                CHECK(x.y <= std::max(p.y, q.y) + 1e-12);
+            }
+        });
 }
 
 }  // namespace

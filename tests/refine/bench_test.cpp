@@ -1,5 +1,5 @@
-// Hidden benchmark: refining a square (plus two interior points) to a few million triangles (-q20 and
-// a small area bound), seconds and triangles per second.  Run with
+// Hidden benchmark: refining a square (plus two interior points) to a few million triangles (-q20
+// and a small area bound), seconds and triangles per second.  Run with
 //   build/tests/test_refine "[.bench]"
 
 #include <chrono>
@@ -25,12 +25,14 @@ TEST_CASE("refinement speed on a large square", "[.bench][refine]") {
     RefineReport report;
     const auto start = std::chrono::steady_clock::now();
     refine_mesh(m, settings, report);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const std::size_t triangles = m.count_triangles();
-    WARN("placement " << int(placement) << ": " << triangles << " triangles, " << report.steiner_points
-                      << " Steiner points, " << report.triangles_created << " created, " << seconds << " s, "
-                      << triangles / seconds / 1e6 << " M triangles/s, "
-                      << seconds / double(report.triangles_created) * 1e9 << " ns per created triangle");
+    WARN("placement " << int(placement) << ": " << triangles << " triangles, "
+                      << report.steiner_points << " Steiner points, " << report.triangles_created
+                      << " created, " << seconds << " s, " << triangles / seconds / 1e6
+                      << " M triangles/s, " << seconds / double(report.triangles_created) * 1e9
+                      << " ns per created triangle");
     CHECK(report.stopped == RefineReport::Stop::none);
     CHECK(report.left_other == 0);
 }

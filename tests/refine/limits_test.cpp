@@ -86,7 +86,8 @@ TEST_CASE("the user test is applied after the area checks", "[refine][criteria]"
     refine_mesh(m, settings, report);
     examine(m, settings);
     mesh::for_each_triangle(m, [&](mesh::TriangleId, const mesh::Triangle& t) {
-        double a[2] = {m.point(t.v[0]).x, m.point(t.v[0]).y}, b[2] = {m.point(t.v[1]).x, m.point(t.v[1]).y},
+        double a[2] = {m.point(t.v[0]).x, m.point(t.v[0]).y},
+               b[2] = {m.point(t.v[1]).x, m.point(t.v[1]).y},
                c[2] = {m.point(t.v[2]).x, m.point(t.v[2]).y};
         CHECK(big_on_the_right(a, b, c, area_of(m, t)) == 0);
     });
@@ -127,7 +128,8 @@ TEST_CASE("switch -Y keeps boundary subsegments whole, -YY every subsegment", "[
     }
 }
 
-TEST_CASE("switch -S caps the Steiner points and the report says what is left", "[refine][limits]") {
+TEST_CASE("switch -S caps the Steiner points and the report says what is left",
+          "[refine][limits]") {
     mesh::Mesh m = point_set_mesh(random_points(60, 8));
     RefineSettings settings;
     settings.criteria.min_angle_degrees = 30;

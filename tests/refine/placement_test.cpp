@@ -16,17 +16,21 @@ namespace {
 std::vector<PoorTriangle> poor_triangles(const mesh::Mesh& m, const QualityTest& quality) {
     std::vector<PoorTriangle> out;
     mesh::for_each_triangle(m, [&](mesh::TriangleId id, const mesh::Triangle& t) {
-        const auto measures = QualityTest::measure(m.point(t.v[0]), m.point(t.v[1]), m.point(t.v[2]));
-        if (quality.assess(m, id, measures) != Poorness::good) out.push_back(describe_poor_triangle(m, id, quality));
+        const auto measures =
+            QualityTest::measure(m.point(t.v[0]), m.point(t.v[1]), m.point(t.v[2]));
+        if (quality.assess(m, id, measures) != Poorness::good)
+            out.push_back(describe_poor_triangle(m, id, quality));
     });
     return out;
 }
 
 }  // namespace
 
-TEST_CASE("every built-in strategy places its point inside the selection disk", "[refine][placement]") {
+TEST_CASE("every built-in strategy places its point inside the selection disk",
+          "[refine][placement]") {
     const double angle = GENERATE(5.0, 15.0, 20.0, 25.0, 33.0);
-    const Placement kind = GENERATE(Placement::circumcentre, Placement::off_centre, Placement::optimisation);
+    const Placement kind =
+        GENERATE(Placement::circumcentre, Placement::off_centre, Placement::optimisation);
     const mesh::Mesh m = point_set_mesh(random_points(400, 11));
     QualityCriteria criteria;
     criteria.min_angle_degrees = angle;

@@ -7,9 +7,9 @@
 
 #include <cmath>
 #include <fstream>
-#include <sstream>
 #include <numbers>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -33,7 +33,8 @@ inline mesh::Mesh point_set_mesh(const std::vector<Point>& points) {
     mesh::for_each_hull_edge(m, [&](const mesh::EdgeView& e) { hull.push_back(e); });
     for (const auto& e : hull) {
         m.triangle(e.edge.triangle()).set_subsegment(e.edge.edge(), true);
-        m.subsegments().set(e.from, e.to, mesh::SubsegmentInfo{1, mesh::SubsegmentInfo::no_segment});
+        m.subsegments().set(e.from, e.to,
+                            mesh::SubsegmentInfo{1, mesh::SubsegmentInfo::no_segment});
     }
     return m;
 }
@@ -56,7 +57,8 @@ inline std::string joined(const std::vector<std::string>& lines) {
 inline double min_angle_degrees(const Point& a, const Point& b, const Point& c) {
     auto angle = [](const Point& o, const Point& p, const Point& q) {
         const double ux = p.x - o.x, uy = p.y - o.y, vx = q.x - o.x, vy = q.y - o.y;
-        return std::atan2(std::abs(ux * vy - uy * vx), ux * vx + uy * vy) * 180.0 / std::numbers::pi;
+        return std::atan2(std::abs(ux * vy - uy * vx), ux * vx + uy * vy) * 180.0 /
+               std::numbers::pi;
     };
     return std::min({angle(a, b, c), angle(b, c, a), angle(c, a, b)});
 }
@@ -87,8 +89,10 @@ inline Outcome examine(const mesh::Mesh& m, const RefineSettings& settings) {
         const double angle = min_angle_degrees(a, b, c);
         o.smallest_angle = std::min(o.smallest_angle, angle);
         // A tiny tolerance: the test is on rho, computed in floating point.
-        if (!protected_angle && angle < settings.criteria.min_angle_degrees * (1 - 1e-9)) ++o.bad_angles;
-        if (settings.criteria.max_area > 0 && measures.area > settings.criteria.max_area) ++o.too_big;
+        if (!protected_angle && angle < settings.criteria.min_angle_degrees * (1 - 1e-9))
+            ++o.bad_angles;
+        if (settings.criteria.max_area > 0 && measures.area > settings.criteria.max_area)
+            ++o.too_big;
     });
     return o;
 }

@@ -9,13 +9,16 @@ namespace gpdr::refine::testing {
 namespace {
 
 const char* strategy_name(Placement p) {
-    return p == Placement::circumcentre ? "circumcentre" : p == Placement::off_centre ? "off-centre" : "optimisation";
+    return p == Placement::circumcentre ? "circumcentre"
+           : p == Placement::off_centre ? "off-centre"
+                                        : "optimisation";
 }
 
 }  // namespace
 
 TEST_CASE("refined point sets meet the angle and area bounds", "[refine]") {
-    const Placement placement = GENERATE(Placement::circumcentre, Placement::off_centre, Placement::optimisation);
+    const Placement placement =
+        GENERATE(Placement::circumcentre, Placement::off_centre, Placement::optimisation);
     const double angle = GENERATE(0.0, 10.0, 20.0, 28.0, 33.0);
     const double area = GENERATE(-1.0, 0.01, 0.0005);
     if (angle == 0 && area < 0) return;  // nothing to do

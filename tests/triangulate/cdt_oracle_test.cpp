@@ -47,8 +47,10 @@ Pslg general_position(std::mt19937_64& rng, std::size_t n, std::size_t tries) {
             const std::uint32_t c = p.segments[2 * s], d = p.segments[2 * s + 1];
             if (properly_cross(p.points[a], p.points[b], p.points[c], p.points[d])) ok = false;
         }
-        for (std::uint32_t v = 0; v < n && ok; ++v)  // no vertex on the segment (measure zero, but check)
-            if (v != a && v != b && orient2d(p.points[a], p.points[b], p.points[v]) == 0) ok = false;
+        for (std::uint32_t v = 0; v < n && ok;
+             ++v)  // no vertex on the segment (measure zero, but check)
+            if (v != a && v != b && orient2d(p.points[a], p.points[b], p.points[v]) == 0)
+                ok = false;
         if (!ok) continue;
         used.insert({std::min(a, b), std::max(a, b)});
         p.segments.insert(p.segments.end(), {a, b});
@@ -71,13 +73,15 @@ Mesh flip_cdt(const Pslg& pslg) {
             bool crossing = false;
             EdgeRef any = EdgeRef::none(), good = EdgeRef::none();
             gpdr::mesh::for_each_edge(m, [&](const gpdr::mesh::EdgeView& e) {
-                if (!properly_cross(m.point(e.from), m.point(e.to), pslg.points[a], pslg.points[b])) return;
+                if (!properly_cross(m.point(e.from), m.point(e.to), pslg.points[a], pslg.points[b]))
+                    return;
                 crossing = true;
                 if (!gpdr::mesh::flippable(m, e.edge)) return;
                 if (any.is_none()) any = e.edge;
                 const auto& c = m.point(m.apex(e.edge));
                 const auto& d = m.point(m.apex(m.neighbour(e.edge)));
-                if (good.is_none() && !properly_cross(c, d, pslg.points[a], pslg.points[b])) good = e.edge;
+                if (good.is_none() && !properly_cross(c, d, pslg.points[a], pslg.points[b]))
+                    good = e.edge;
             });
             if (!crossing) break;
             REQUIRE(!any.is_none());

@@ -33,7 +33,9 @@ inline Pslg make_pslg(std::vector<Point> points, std::vector<std::uint32_t> segm
 inline bool has_subsegment(const mesh::Mesh& m, std::uint32_t a, std::uint32_t b) {
     bool found = false;
     mesh::for_each_edge(m, [&](const mesh::EdgeView& e) {
-        if (((index(e.from) == a && index(e.to) == b) || (index(e.from) == b && index(e.to) == a)) && e.subsegment)
+        if (((index(e.from) == a && index(e.to) == b) ||
+             (index(e.from) == b && index(e.to) == a)) &&
+            e.subsegment)
             found = true;
     });
     return found;
@@ -42,7 +44,8 @@ inline bool has_subsegment(const mesh::Mesh& m, std::uint32_t a, std::uint32_t b
 inline bool has_edge(const mesh::Mesh& m, std::uint32_t a, std::uint32_t b) {
     bool found = false;
     mesh::for_each_edge(m, [&](const mesh::EdgeView& e) {
-        if ((index(e.from) == a && index(e.to) == b) || (index(e.from) == b && index(e.to) == a)) found = true;
+        if ((index(e.from) == a && index(e.to) == b) || (index(e.from) == b && index(e.to) == a))
+            found = true;
     });
     return found;
 }

@@ -7,8 +7,8 @@
 
 #include <catch2/catch.hpp>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <set>
 #include <utility>
@@ -37,8 +37,9 @@ std::vector<std::string> not_delaunay_edges(const Mesh& m) {
         const EdgeRef across = t.n[e.edge.edge()];
         const Point& z = m.point(m.apex(across));
         if (geometry::incircle(m.point(t.v[0]), m.point(t.v[1]), m.point(t.v[2]), z) > 0)
-            problems.push_back("edge " + std::to_string(index(e.from)) + "-" + std::to_string(index(e.to)) +
-                               (e.subsegment ? " (a subsegment)" : "") + " is not locally Delaunay");
+            problems.push_back(
+                "edge " + std::to_string(index(e.from)) + "-" + std::to_string(index(e.to)) +
+                (e.subsegment ? " (a subsegment)" : "") + " is not locally Delaunay");
     });
     return problems;
 }
@@ -86,8 +87,8 @@ CdtReport with_splits(const Result& r, const Pslg& pslg) {
         const Point& p = r.mesh.point(v);
         if (on[seg].count(index(v))) return true;
         if (geometry::orient2d(a, b, p) != 0) return false;
-        return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
-               p.y <= std::max(a.y, b.y);
+        return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) &&
+               std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
     };
     for (const SegmentSplit& s : r.report.splits)
         for (std::size_t seg = 0; seg < on.size(); ++seg)
@@ -125,7 +126,8 @@ void require_conforming_delaunay(const Result& r, const Pslg& pslg) {
 // The square (0,0)-(10,10) with its diagonal 0-2 and a vertex just above
 // the diagonal's middle: the diagonal is encroached many times over.
 Pslg square_with_diagonal() {
-    return make_pslg({{0, 0}, {10, 0}, {10, 10}, {0, 10}, {5, 5.05}, {2, 8}}, {0, 1, 1, 2, 2, 3, 3, 0, 0, 2});
+    return make_pslg({{0, 0}, {10, 0}, {10, 10}, {0, 10}, {5, 5.05}, {2, 8}},
+                     {0, 1, 1, 2, 2, 3, 3, 0, 0, 2});
 }
 
 // Segments from the origin at angles 0, 5, ..., 90 degrees (every pair
@@ -157,7 +159,8 @@ TEST_CASE("make_conforming: a diagonal passing close to a vertex", "[triangulate
     CHECK_FALSE(has_subsegment(r.mesh, 0, 2));
 }
 
-TEST_CASE("make_conforming: a star of segments 5 degrees apart terminates", "[triangulate][conforming]") {
+TEST_CASE("make_conforming: a star of segments 5 degrees apart terminates",
+          "[triangulate][conforming]") {
     const Pslg pslg = small_angle_star();
     CdtOptions cdt;
     cdt.convex_hull = true;
@@ -211,7 +214,8 @@ TEST_CASE("make_conforming: random segment soups", "[triangulate][conforming]") 
         cdt.convex_hull = true;
         CdtReport cdt_report;
         Mesh before = constrained_delaunay(pslg, cdt, cdt_report);
-        if (!check_mesh(before).empty() || !check_conformity(before, pslg, cdt_report).empty()) continue;
+        if (!check_mesh(before).empty() || !check_conformity(before, pslg, cdt_report).empty())
+            continue;
         ++checked;
         const Result r = conform(pslg, cdt, {});
         if (r.report.encroached_left == 0) {
@@ -230,7 +234,8 @@ TEST_CASE("make_conforming: random segment soups", "[triangulate][conforming]") 
     CHECK(complete >= 8);
 }
 
-TEST_CASE("make_conforming: an already conforming mesh gets no points", "[triangulate][conforming]") {
+TEST_CASE("make_conforming: an already conforming mesh gets no points",
+          "[triangulate][conforming]") {
     const Pslg pslg = make_pslg({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {0, 1, 1, 2, 2, 3, 3, 0});
     const Result r = conform(pslg, {}, {});
     require_conforming_delaunay(r, pslg);
@@ -292,7 +297,8 @@ TEST_CASE("make_conforming respects -Y, -YY and -S", "[triangulate][conforming]"
     }
 }
 
-TEST_CASE("conforming_options reads the switches and the budget left", "[triangulate][conforming]") {
+TEST_CASE("conforming_options reads the switches and the budget left",
+          "[triangulate][conforming]") {
     Options o;
     o.no_segment_splitting = 1;
     o.steiner_limit = true;

@@ -52,7 +52,8 @@ TEST_CASE("a long segment through a cloud of points", "[triangulate][cdt]") {
 
 TEST_CASE("two crossing segments are both split at the crossing", "[triangulate][cdt]") {
     // Unit square with its two diagonals (and its sides as segments).
-    const Pslg pslg = make_pslg({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {0, 2, 1, 3, 0, 1, 1, 2, 2, 3, 3, 0});
+    const Pslg pslg =
+        make_pslg({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {0, 2, 1, 3, 0, 1, 1, 2, 2, 3, 3, 0});
     CdtReport report;
     const Mesh m = constrained_delaunay(pslg, {}, report);
     require_valid(m, pslg, report);
@@ -114,7 +115,8 @@ TEST_CASE("a segment through an input vertex is split there", "[triangulate][cdt
     const Mesh m = triangulate_segments(pslg, report);
     require_valid(m, pslg, report);
     REQUIRE(report.segments_through_vertices.size() == 1);
-    CHECK(report.segments_through_vertices[0] == std::pair<std::uint32_t, VertexId>{0, VertexId{2}});
+    CHECK(report.segments_through_vertices[0] ==
+          std::pair<std::uint32_t, VertexId>{0, VertexId{2}});
     CHECK(has_subsegment(m, 0, 2));
     CHECK(has_subsegment(m, 2, 1));
     CHECK(m.subsegments().size() == 2);
@@ -123,7 +125,8 @@ TEST_CASE("a segment through an input vertex is split there", "[triangulate][cdt
 
 TEST_CASE("a segment through a vertex found while walking", "[triangulate][cdt]") {
     // Vertex 2 lies on 0-1 but is not a neighbour of 0: the walk meets it.
-    const Pslg pslg = make_pslg({{0, 0}, {4, 0}, {3, 0}, {1, 0.2}, {1, -0.2}, {2, 0.1}, {2, -0.1}}, {0, 1});
+    const Pslg pslg =
+        make_pslg({{0, 0}, {4, 0}, {3, 0}, {1, 0.2}, {1, -0.2}, {2, 0.1}, {2, -0.1}}, {0, 1});
     CdtReport report;
     const Mesh m = triangulate_segments(pslg, report);
     require_valid(m, pslg, report);
@@ -140,9 +143,11 @@ TEST_CASE("duplicate and zero-length segments are skipped and reported", "[trian
     CdtReport report;
     const Mesh m = triangulate_segments(pslg, report);
     require_valid(m, pslg, report);
-    CHECK(report.duplicate_vertices == std::vector<std::pair<std::uint32_t, std::uint32_t>>{{4, 0}});
+    CHECK(report.duplicate_vertices ==
+          std::vector<std::pair<std::uint32_t, std::uint32_t>>{{4, 0}});
     CHECK(report.zero_length_segments == std::vector<std::uint32_t>{2, 4});
-    CHECK(report.duplicate_segments == std::vector<std::pair<std::uint32_t, std::uint32_t>>{{1, 0}, {3, 0}});
+    CHECK(report.duplicate_segments ==
+          std::vector<std::pair<std::uint32_t, std::uint32_t>>{{1, 0}, {3, 0}});
     CHECK(report.skipped == std::vector<bool>{false, true, true, true, true, false});
     // Segment 5 (4-2) is attached to the kept vertex 0.
     CHECK(has_subsegment(m, 0, 2));
@@ -181,7 +186,8 @@ TEST_CASE("a zero marker is replaced by a later segment's marker", "[triangulate
 
 TEST_CASE("bad segment lists are refused", "[triangulate][cdt]") {
     CdtReport report;
-    CHECK_THROWS_AS(triangulate_segments(make_pslg({{0, 0}, {1, 0}, {0, 1}}, {0, 3}), report), GeometryError);
+    CHECK_THROWS_AS(triangulate_segments(make_pslg({{0, 0}, {1, 0}, {0, 1}}, {0, 3}), report),
+                    GeometryError);
     Pslg p = make_pslg({{0, 0}, {1, 0}, {0, 1}}, {0, 1});
     p.segment_markers = {1, 2};
     CHECK_THROWS_AS(triangulate_segments(p, report), GeometryError);
@@ -197,7 +203,8 @@ TEST_CASE("split_subsegment keeps the halves flagged and their entries", "[mesh]
     auto edge_between = [&](std::uint32_t a, std::uint32_t b) {
         gpdr::mesh::EdgeRef found;
         gpdr::mesh::for_each_edge(m, [&](const gpdr::mesh::EdgeView& e) {
-            if ((index(e.from) == a && index(e.to) == b) || (index(e.from) == b && index(e.to) == a))
+            if ((index(e.from) == a && index(e.to) == b) ||
+                (index(e.from) == b && index(e.to) == a))
                 found = e.edge;
         });
         return found;
@@ -257,8 +264,8 @@ TEST_CASE("split_subsegment on a fine mesh grows a Bowyer-Watson cavity", "[mesh
         const auto& b = m.point(m.destination(e));
         const double t = 0.2 + 0.6 * double(rng() % 1000) / 1000.0;
         buffer.created.clear();
-        gpdr::mesh::split_subsegment(pool, e, geometry::point_on_segment(a, b, t), gpdr::mesh::VertexKind::segment,
-                                     buffer);
+        gpdr::mesh::split_subsegment(pool, e, geometry::point_on_segment(a, b, t),
+                                     gpdr::mesh::VertexKind::segment, buffer);
         const auto problems = gpdr::mesh::check_mesh(m);
         INFO(joined(problems));
         REQUIRE(problems.empty());
@@ -266,7 +273,8 @@ TEST_CASE("split_subsegment on a fine mesh grows a Bowyer-Watson cavity", "[mesh
     CHECK(m.subsegments().size() == 51);
 }
 
-TEST_CASE("random segment soups: every result is a valid CDT that conforms", "[triangulate][cdt][random]") {
+TEST_CASE("random segment soups: every result is a valid CDT that conforms",
+          "[triangulate][cdt][random]") {
     std::mt19937_64 rng(12345);
     int cases = 0;
     for (int round = 0; round < 300; ++round) {
@@ -304,7 +312,8 @@ TEST_CASE("random long segments with many crossings", "[triangulate][cdt][random
     }
 }
 
-TEST_CASE("benchmark: CDT of a 1-million-segment star polygon with islands", "[.bench][triangulate][cdt]") {
+TEST_CASE("benchmark: CDT of a 1-million-segment star polygon with islands",
+          "[.bench][triangulate][cdt]") {
     // A star-shaped polygon (random radius per angle step) and 1000 small
     // square islands inside it: the radii jitter, so most segments are not
     // Delaunay edges of the points and must be forced in.
@@ -319,10 +328,14 @@ TEST_CASE("benchmark: CDT of a 1-million-segment star polygon with islands", "[.
         pslg.segments.insert(pslg.segments.end(), {i, (i + 1) % n});
     }
     for (int k = 0; k < 1000; ++k) {
-        const double cx = -40 + 80 * double(k % 32) / 32, cy = -40 + 80 * double(k / 32) / 32, h = 0.5;
+        const double cx = -40 + 80 * double(k % 32) / 32, cy = -40 + 80 * double(k / 32) / 32,
+                     h = 0.5;
         const auto base = static_cast<std::uint32_t>(pslg.points.size());
-        pslg.points.insert(pslg.points.end(), {{cx - h, cy - h}, {cx + h, cy - h}, {cx + h, cy + h}, {cx - h, cy + h}});
-        for (std::uint32_t j = 0; j < 4; ++j) pslg.segments.insert(pslg.segments.end(), {base + j, base + (j + 1) % 4});
+        pslg.points.insert(
+            pslg.points.end(),
+            {{cx - h, cy - h}, {cx + h, cy - h}, {cx + h, cy + h}, {cx - h, cy + h}});
+        for (std::uint32_t j = 0; j < 4; ++j)
+            pslg.segments.insert(pslg.segments.end(), {base + j, base + (j + 1) % 4});
         pslg.holes.push_back({cx, cy});
     }
     using clock = std::chrono::steady_clock;
@@ -330,8 +343,9 @@ TEST_CASE("benchmark: CDT of a 1-million-segment star polygon with islands", "[.
     const auto t0 = clock::now();
     const Mesh m = constrained_delaunay(pslg, {}, report);
     const auto t1 = clock::now();
-    std::printf("CDT of %zu vertices, %zu segments: %.3f s, %zu triangles, %zu subsegments\n", pslg.points.size(),
-                pslg.segment_count(), std::chrono::duration<double>(t1 - t0).count(), m.count_triangles(),
+    std::printf("CDT of %zu vertices, %zu segments: %.3f s, %zu triangles, %zu subsegments\n",
+                pslg.points.size(), pslg.segment_count(),
+                std::chrono::duration<double>(t1 - t0).count(), m.count_triangles(),
                 m.subsegments().size());
     CHECK(m.subsegments().size() == pslg.segment_count());
     CHECK(report.new_vertices.empty());

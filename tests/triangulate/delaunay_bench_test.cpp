@@ -34,13 +34,17 @@ void run(std::size_t n) {
         "  store: %.1f bytes per triangle (%zu bytes of slots for %zu triangles), "
         "%.1f bytes per vertex (%zu bytes)\n",
         n, total_s, 1e6 * total_s / double(n), sort_s, triangles, double(triangles) / total_s / 1e6,
-        double(mesh.triangle_store_bytes()) / double(triangles), mesh.triangle_store_bytes(), triangles,
-        double(mesh.vertex_store_bytes()) / double(n), mesh.vertex_store_bytes());
+        double(mesh.triangle_store_bytes()) / double(triangles), mesh.triangle_store_bytes(),
+        triangles, double(mesh.vertex_store_bytes()) / double(n), mesh.vertex_store_bytes());
     CHECK(triangles > 2 * n - 100);
 }
 
 }  // namespace
 
-TEST_CASE("benchmark: Delaunay of 1 million uniform random points", "[.bench][triangulate][1m]") { run(1'000'000); }
+TEST_CASE("benchmark: Delaunay of 1 million uniform random points", "[.bench][triangulate][1m]") {
+    run(1'000'000);
+}
 
-TEST_CASE("benchmark: Delaunay of 10 million uniform random points", "[.bench][triangulate][10m]") { run(10'000'000); }
+TEST_CASE("benchmark: Delaunay of 10 million uniform random points", "[.bench][triangulate][10m]") {
+    run(10'000'000);
+}

@@ -35,14 +35,17 @@ namespace {
 // ones on hull edges included), by Andrew's monotone chain with exact
 // orientation, then a test of every point against every hull edge.
 std::size_t hull_vertex_count(std::vector<Point> p) {
-    auto less = [](const Point& a, const Point& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); };
+    auto less = [](const Point& a, const Point& b) {
+        return a.x < b.x || (a.x == b.x && a.y < b.y);
+    };
     std::sort(p.begin(), p.end(), less);
     p.erase(std::unique(p.begin(), p.end()), p.end());
     std::vector<Point> hull;
     for (int pass = 0; pass < 2; ++pass) {
         const std::size_t base = hull.size();
         for (const Point& q : p) {
-            while (hull.size() >= base + 2 && orient2d(hull[hull.size() - 2], hull.back(), q) <= 0) hull.pop_back();
+            while (hull.size() >= base + 2 && orient2d(hull[hull.size() - 2], hull.back(), q) <= 0)
+                hull.pop_back();
             hull.push_back(q);
         }
         hull.pop_back();
@@ -72,7 +75,8 @@ void verify(const std::vector<Point>& points, const Mesh& mesh, const DelaunayRe
     // Duplicates: equal points, the kept one has the lowest index among its
     // equals, and every point is either used or reported.
     std::map<std::pair<double, double>, std::uint32_t> lowest;
-    for (std::uint32_t i = 0; i < points.size(); ++i) lowest.try_emplace({points[i].x, points[i].y}, i);
+    for (std::uint32_t i = 0; i < points.size(); ++i)
+        lowest.try_emplace({points[i].x, points[i].y}, i);
     std::set<std::uint32_t> reported;
     for (auto [lost, kept] : report.duplicates) {
         CHECK(points[lost] == points[kept]);
@@ -88,7 +92,8 @@ void verify(const std::vector<Point>& points, const Mesh& mesh, const DelaunayRe
     for_each_triangle(mesh, [&](TriangleId, const Triangle& t) {
         for (VertexId v : t.v) used[index(v)] = 1;
     });
-    for (std::uint32_t i = 0; i < points.size(); ++i) CHECK(bool(used[i]) == (reported.count(i) == 0));
+    for (std::uint32_t i = 0; i < points.size(); ++i)
+        CHECK(bool(used[i]) == (reported.count(i) == 0));
 
     // Euler: 2n - 2 - h triangles, h hull vertices.
     const std::size_t h = hull_vertex_count(points);
@@ -98,7 +103,8 @@ void verify(const std::vector<Point>& points, const Mesh& mesh, const DelaunayRe
 
     // The hull is convex: no point strictly outside any hull edge.
     for_each_hull_edge(mesh, [&](const EdgeView& e) {
-        for (const Point& q : points) REQUIRE(orient2d(mesh.point(e.from), mesh.point(e.to), q) >= 0);
+        for (const Point& q : points)
+            REQUIRE(orient2d(mesh.point(e.from), mesh.point(e.to), q) >= 0);
     });
 }
 
@@ -169,7 +175,8 @@ TEST_CASE("Delaunay of clustered points", "[triangulate][delaunay]") {
     std::vector<Point> points;
     for (int c = 0; c < 20; ++c) {
         const Point centre{loose(rng), loose(rng)};
-        for (int i = 0; i < 300; ++i) points.push_back({centre.x + tight(rng), centre.y + tight(rng)});
+        for (int i = 0; i < 300; ++i)
+            points.push_back({centre.x + tight(rng), centre.y + tight(rng)});
     }
     DelaunayReport report;
     const Mesh mesh = delaunay(points, report);
@@ -217,7 +224,8 @@ TEST_CASE("Delaunay with many exact duplicates", "[triangulate][delaunay]") {
     }
 }
 
-TEST_CASE("Delaunay equals the brute-force oracle on small random sets", "[triangulate][delaunay]") {
+TEST_CASE("Delaunay equals the brute-force oracle on small random sets",
+          "[triangulate][delaunay]") {
     std::mt19937_64 rng(99);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     for (int trial = 0; trial < 200; ++trial) {
@@ -238,7 +246,8 @@ TEST_CASE("Delaunay equals the brute-force oracle on small random sets", "[trian
                     bool empty = true;
                     for (std::uint32_t d = 0; d < n && empty; ++d) {
                         if (d == a || d == b || d == c) continue;
-                        const double in = incircle(points[t[0]], points[t[1]], points[t[2]], points[d]);
+                        const double in =
+                            incircle(points[t[0]], points[t[1]], points[t[2]], points[d]);
                         if (in == 0) general = false;
                         empty = in < 0;
                     }
@@ -282,7 +291,11 @@ TEST_CASE("Delaunay output order is reproducible", "[triangulate][delaunay]") {
     const Mesh a = delaunay(points, r1);
     const Mesh b = delaunay(points, r2);
     std::vector<Tri> la, lb;
-    for_each_triangle(a, [&](TriangleId, const Triangle& t) { la.push_back({index(t.v[0]), index(t.v[1]), index(t.v[2])}); });
-    for_each_triangle(b, [&](TriangleId, const Triangle& t) { lb.push_back({index(t.v[0]), index(t.v[1]), index(t.v[2])}); });
+    for_each_triangle(a, [&](TriangleId, const Triangle& t) {
+        la.push_back({index(t.v[0]), index(t.v[1]), index(t.v[2])});
+    });
+    for_each_triangle(b, [&](TriangleId, const Triangle& t) {
+        lb.push_back({index(t.v[0]), index(t.v[1]), index(t.v[2])});
+    });
     CHECK(la == lb);
 }

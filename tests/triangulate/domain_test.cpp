@@ -77,7 +77,8 @@ TEST_CASE("segments inside a hole leave the side table", "[triangulate][domain]"
 TEST_CASE("without -c the concavities are removed; with -c the hull is kept and flagged",
           "[triangulate][domain]") {
     // An L: the notch corner (1, 1) is inside the hull.
-    const Pslg pslg = make_pslg({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, {0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 0});
+    const Pslg pslg = make_pslg({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}},
+                                {0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 0});
     CdtReport report;
     const Mesh m = constrained_delaunay(pslg, {}, report);
     require_valid(m, pslg, report);
@@ -97,7 +98,8 @@ TEST_CASE("without -c the concavities are removed; with -c the hull is kept and 
     gpdr::mesh::for_each_hull_edge(h, [&](const gpdr::mesh::EdgeView& e) { CHECK(e.subsegment); });
 }
 
-TEST_CASE("a PSLG without any closed boundary is eaten entirely without -c", "[triangulate][domain]") {
+TEST_CASE("a PSLG without any closed boundary is eaten entirely without -c",
+          "[triangulate][domain]") {
     const Pslg pslg = make_pslg({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {0, 2});
     CdtReport report;
     const Mesh m = constrained_delaunay(pslg, {}, report);
@@ -113,31 +115,33 @@ TEST_CASE("nested regions; later regions overwrite earlier ones", "[triangulate]
     SECTION("each region gets its index + 1") {
         const Mesh m = constrained_delaunay(pslg, {}, report);
         require_valid(m, pslg, report);
-        gpdr::mesh::for_each_triangle(m, [&](gpdr::mesh::TriangleId, const gpdr::mesh::Triangle& t) {
-            CHECK(t.region == (inside_inner(centroid(m, t)) ? 2 : 1));
-        });
+        gpdr::mesh::for_each_triangle(m,
+                                      [&](gpdr::mesh::TriangleId, const gpdr::mesh::Triangle& t) {
+                                          CHECK(t.region == (inside_inner(centroid(m, t)) ? 2 : 1));
+                                      });
     }
     SECTION("an overlapping later region wins") {
         pslg.regions.push_back(Region{1.6, 1.4, 30, -1});
         const Mesh m = constrained_delaunay(pslg, {}, report);
-        gpdr::mesh::for_each_triangle(m, [&](gpdr::mesh::TriangleId, const gpdr::mesh::Triangle& t) {
-            CHECK(t.region == (inside_inner(centroid(m, t)) ? 3 : 1));
-        });
+        gpdr::mesh::for_each_triangle(m,
+                                      [&](gpdr::mesh::TriangleId, const gpdr::mesh::Triangle& t) {
+                                          CHECK(t.region == (inside_inner(centroid(m, t)) ? 3 : 1));
+                                      });
     }
     SECTION("a region point in a hole marks nothing") {
         pslg.holes = {{1.5, 1.5}};
         const Mesh m = constrained_delaunay(pslg, {}, report);
         CHECK(m.count_triangles() == 8);
-        gpdr::mesh::for_each_triangle(m, [&](gpdr::mesh::TriangleId, const gpdr::mesh::Triangle& t) {
-            CHECK(t.region == 1);
-        });
+        gpdr::mesh::for_each_triangle(
+            m,
+            [&](gpdr::mesh::TriangleId, const gpdr::mesh::Triangle& t) { CHECK(t.region == 1); });
     }
     SECTION("no region: 0") {
         pslg.regions.clear();
         const Mesh m = constrained_delaunay(pslg, {}, report);
-        gpdr::mesh::for_each_triangle(m, [&](gpdr::mesh::TriangleId, const gpdr::mesh::Triangle& t) {
-            CHECK(t.region == 0);
-        });
+        gpdr::mesh::for_each_triangle(
+            m,
+            [&](gpdr::mesh::TriangleId, const gpdr::mesh::Triangle& t) { CHECK(t.region == 0); });
     }
 }
 

@@ -74,7 +74,8 @@ const std::vector<std::uint32_t> square_corners{0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0,
 
 }  // namespace
 
-TEST_CASE("from_triangles rebuilds a Delaunay mesh with the same neighbours", "[triangulate][from_triangles]") {
+TEST_CASE("from_triangles rebuilds a Delaunay mesh with the same neighbours",
+          "[triangulate][from_triangles]") {
     const std::uint32_t stride = GENERATE(3u, 6u);
     const std::size_t n = GENERATE(std::size_t{3}, std::size_t{50}, std::size_t{3000});
     const auto points = uniform_points(n, static_cast<std::uint32_t>(n + stride));
@@ -106,7 +107,8 @@ TEST_CASE("from_triangles rebuilds a Delaunay mesh with the same neighbours", "[
     // edges.
     const auto number = number_triangles(original);
     std::vector<TriangleId> by_number(count);
-    for_each_triangle(original, [&](TriangleId id, const Triangle&) { by_number[number[index(id)]] = id; });
+    for_each_triangle(original,
+                      [&](TriangleId id, const Triangle&) { by_number[number[index(id)]] = id; });
     for (std::uint32_t i = 0; i < count; ++i) {
         const Triangle& t = mesh.triangle(TriangleId{i});
         const Triangle& o = original.triangle(by_number[i]);
@@ -171,7 +173,8 @@ TEST_CASE("from_triangles flags segments that are mesh edges", "[triangulate][fr
     CHECK(*interior == SubsegmentInfo{7, 0});
     CHECK(*mesh.subsegments().find(VertexId{0}, VertexId{1}) == SubsegmentInfo{1, 1});
     CHECK(*mesh.subsegments().find(VertexId{1}, VertexId{2}) == SubsegmentInfo{5, 2});
-    CHECK(*mesh.subsegments().find(VertexId{2}, VertexId{3}) == SubsegmentInfo{1, SubsegmentInfo::no_segment});
+    CHECK(*mesh.subsegments().find(VertexId{2}, VertexId{3}) ==
+          SubsegmentInfo{1, SubsegmentInfo::no_segment});
     // Both sides of the interior segment carry the flag.
     const EdgeRef e = edge_of(mesh, TriangleId{0}, 1, 4);
     REQUIRE(!e.is_none());
@@ -185,7 +188,8 @@ TEST_CASE("from_triangles flags segments that are mesh edges", "[triangulate][fr
     CHECK(!mesh.triangle(g.triangle()).is_subsegment(g.edge()));
 }
 
-TEST_CASE("from_triangles inserts a segment that crosses triangles", "[triangulate][from_triangles]") {
+TEST_CASE("from_triangles inserts a segment that crosses triangles",
+          "[triangulate][from_triangles]") {
     // A row of three unit squares, each split by its rising diagonal; the
     // segment 0-7 from the bottom-left to the top-right corner crosses
     // them all.  Attributes: 10 + the triangle's index.
@@ -215,7 +219,8 @@ TEST_CASE("from_triangles inserts a segment that crosses triangles", "[triangula
     });
 }
 
-TEST_CASE("from_triangles refuses a segment that leaves the mesh", "[triangulate][from_triangles]") {
+TEST_CASE("from_triangles refuses a segment that leaves the mesh",
+          "[triangulate][from_triangles]") {
     // Two triangles forming a non-convex L-ish shape; segment 1-3 runs
     // outside across the notch.
     const std::vector<Point> p{{0, 0}, {2, 0}, {1, 1}, {2, 2}, {0, 2}};
@@ -228,7 +233,8 @@ TEST_CASE("from_triangles refuses a segment that leaves the mesh", "[triangulate
     CHECK_THAT(error_of(in), Catch::Contains("segment 0 (1-3) is not an edge of the mesh"));
 }
 
-TEST_CASE("from_triangles accepts non-Delaunay meshes, holes and unused vertices", "[triangulate][from_triangles]") {
+TEST_CASE("from_triangles accepts non-Delaunay meshes, holes and unused vertices",
+          "[triangulate][from_triangles]") {
     // A square split by the "wrong" diagonal of a flat quadrilateral (not
     // Delaunay), plus an unused vertex; and a ring with a hole.
     SECTION("not Delaunay") {
@@ -247,7 +253,8 @@ TEST_CASE("from_triangles accepts non-Delaunay meshes, holes and unused vertices
     SECTION("a ring around a square hole") {
         // Outer square 0..3, inner square 4..7, eight triangles between.
         const std::vector<Point> p{{0, 0}, {3, 0}, {3, 3}, {0, 3}, {1, 1}, {2, 1}, {2, 2}, {1, 2}};
-        const std::vector<std::uint32_t> c{0, 1, 5, 0, 5, 4, 1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
+        const std::vector<std::uint32_t> c{0, 1, 5, 0, 5, 4, 1, 2, 6, 1, 6, 5,
+                                           2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
         TriangleMeshInput in;
         in.points = p;
         in.corners = c;
@@ -260,7 +267,8 @@ TEST_CASE("from_triangles accepts non-Delaunay meshes, holes and unused vertices
     }
 }
 
-TEST_CASE("from_triangles refuses broken meshes, naming the triangle", "[triangulate][from_triangles]") {
+TEST_CASE("from_triangles refuses broken meshes, naming the triangle",
+          "[triangulate][from_triangles]") {
     TriangleMeshInput in;
     in.points = square_points;
     in.index_base = 1;
@@ -281,7 +289,8 @@ TEST_CASE("from_triangles refuses broken meshes, naming the triangle", "[triangu
     SECTION("repeated corner") {
         const std::vector<std::uint32_t> c{0, 1, 4, 2, 2, 4};
         in.corners = c;
-        CHECK_THAT(error_of(in), Catch::Contains("triangle 2") && Catch::Contains("repeats a vertex"));
+        CHECK_THAT(error_of(in),
+                   Catch::Contains("triangle 2") && Catch::Contains("repeats a vertex"));
     }
     SECTION("corner out of range (the reader's job, but never a crash)") {
         const std::vector<std::uint32_t> c{0, 1, 9};
@@ -291,7 +300,8 @@ TEST_CASE("from_triangles refuses broken meshes, naming the triangle", "[triangu
     SECTION("an edge in three triangles") {
         // Triangles on edge 0-1: (0,1,4) above, and two more: (1,0,5) and
         // (1,0,6) below; all counter-clockwise.
-        const std::vector<Point> p{{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.5, 0.5}, {0.5, -1}, {0.3, -2}};
+        const std::vector<Point> p{{0, 0},     {1, 0},    {1, 1},   {0, 1},
+                                   {0.5, 0.5}, {0.5, -1}, {0.3, -2}};
         const std::vector<std::uint32_t> c{0, 1, 4, 1, 0, 5, 1, 0, 6};
         in.points = p;
         in.corners = c;
@@ -304,8 +314,10 @@ TEST_CASE("from_triangles refuses broken meshes, naming the triangle", "[triangu
         const std::vector<std::uint32_t> c{0, 1, 2, 0, 1, 3};
         in.points = p;
         in.corners = c;
-        CHECK_THAT(error_of(in), Catch::Contains("triangle 1 (corners 1, 2, 3) and triangle 2 (corners 1, 2, 4)") &&
-                                     Catch::Contains("same side"));
+        CHECK_THAT(
+            error_of(in),
+            Catch::Contains("triangle 1 (corners 1, 2, 3) and triangle 2 (corners 1, 2, 4)") &&
+                Catch::Contains("same side"));
     }
     SECTION("a star that winds twice around its vertex") {
         // Vertex 0 at the origin, vertices 1..5 on the unit circle 144
@@ -329,12 +341,14 @@ TEST_CASE("from_triangles refuses broken meshes, naming the triangle", "[triangu
     }
 }
 
-TEST_CASE("from_triangles: the star check accepts stars split at angle zero", "[triangulate][from_triangles]") {
+TEST_CASE("from_triangles: the star check accepts stars split at angle zero",
+          "[triangulate][from_triangles]") {
     // Vertices exactly on the positive and negative x rays from the centre
     // (the boundary cases of the winding count) and a fan of eight.
     std::vector<Point> p{{0, 0}};
     for (int i = 0; i < 8; ++i) {
-        const double c[8][2] = {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
+        const double c[8][2] = {{1, 0},  {1, 1},   {0, 1},  {-1, 1},
+                                {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
         p.push_back({c[i][0], c[i][1]});
     }
     std::vector<std::uint32_t> c;
@@ -348,7 +362,8 @@ TEST_CASE("from_triangles: the star check accepts stars split at angle zero", "[
     CHECK(report.boundary_edges == 8);
 }
 
-TEST_CASE("benchmark: from_triangles on the Delaunay mesh of 5 million points", "[.bench][triangulate]") {
+TEST_CASE("benchmark: from_triangles on the Delaunay mesh of 5 million points",
+          "[.bench][triangulate]") {
     const auto points = uniform_points(5'000'000, 7);
     triangulate::DelaunayReport dreport;
     std::vector<std::uint32_t> corners;
@@ -364,8 +379,10 @@ TEST_CASE("benchmark: from_triangles on the Delaunay mesh of 5 million points", 
     const auto t0 = clock::now();
     const Mesh mesh = from_triangles(in, report);
     const double seconds = std::chrono::duration<double>(clock::now() - t0).count();
-    std::printf("from_triangles: %zu vertices, %zu triangles in %.3f s (%.1f M triangles/s), %zu boundary edges\n",
-                points.size(), corners.size() / 3, seconds, double(corners.size() / 3) / seconds / 1e6,
-                report.boundary_edges);
+    std::printf(
+        "from_triangles: %zu vertices, %zu triangles in %.3f s (%.1f M triangles/s), %zu boundary "
+        "edges\n",
+        points.size(), corners.size() / 3, seconds, double(corners.size() / 3) / seconds / 1e6,
+        report.boundary_edges);
     CHECK(mesh.count_triangles() == corners.size() / 3);
 }

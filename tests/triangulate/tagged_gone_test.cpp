@@ -59,7 +59,8 @@ std::vector<Was> gone_since(const Mesh& m, const std::map<std::uint32_t, Tagged>
     std::vector<Was> gone;
     for (const auto& [i, rec] : before) {
         const mesh::Triangle& t = m.triangle(mesh::TriangleId{i});
-        if (!t.live() || t.generation != rec.generation || was_of(t, t.user_tag) != rec.was) gone.push_back(rec.was);
+        if (!t.live() || t.generation != rec.generation || was_of(t, t.user_tag) != rec.was)
+            gone.push_back(rec.was);
     }
     std::sort(gone.begin(), gone.end());
     return gone;
@@ -67,14 +68,16 @@ std::vector<Was> gone_since(const Mesh& m, const std::map<std::uint32_t, Tagged>
 
 std::vector<Was> reported(const mesh::InsertBuffer& buffer) {
     std::vector<Was> out;
-    for (const auto& g : buffer.tagged_gone) out.push_back({index(g.v[0]), index(g.v[1]), index(g.v[2]), g.tag});
+    for (const auto& g : buffer.tagged_gone)
+        out.push_back({index(g.v[0]), index(g.v[1]), index(g.v[2]), g.tag});
     std::sort(out.begin(), out.end());
     return out;
 }
 
 }  // namespace
 
-TEST_CASE("insertions and subsegment splits report the tagged triangles they kill or flip", "[mesh][cdt]") {
+TEST_CASE("insertions and subsegment splits report the tagged triangles they kill or flip",
+          "[mesh][cdt]") {
     // A cloud crossed by a few segments; points are inserted and
     // subsegments split at points off their line (so that the bent halves
     // need Lawson flips, which change triangles outside the cavity).

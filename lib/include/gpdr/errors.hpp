@@ -22,7 +22,9 @@ public:
     InputError(std::string file, std::size_t line, std::string reason)
         : Error(line == 0 ? file + ": " + reason
                           : file + ":" + std::to_string(line) + ": " + reason),
-          file_(std::move(file)), line_(line), reason_(std::move(reason)) {}
+          file_(std::move(file)),
+          line_(line),
+          reason_(std::move(reason)) {}
 
     const std::string& file() const noexcept { return file_; }
     std::size_t line() const noexcept { return line_; }

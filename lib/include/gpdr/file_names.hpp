@@ -45,8 +45,7 @@ struct FileNames {
     // What the run may write (which ones depends on -e -v -n -g -N -E -P).
     // out_poly is empty with -I: Triangle never writes a .poly then, so as not
     // to replace the input .poly.
-    std::string out_node, out_ele, out_poly, out_edge, out_neigh, out_v_node, out_v_edge,
-        out_off;
+    std::string out_node, out_ele, out_poly, out_edge, out_neigh, out_v_node, out_v_edge, out_off;
 };
 
 // Every name for options.input under the given switches (the implied ones

@@ -12,10 +12,10 @@ namespace gpdr {
 
 // A list of vertices: .node, or the vertex section of .poly.
 struct NodeSet {
-    std::vector<double> xy;              // x0, y0, x1, y1, ...
+    std::vector<double> xy;  // x0, y0, x1, y1, ...
     std::uint32_t attribute_count = 0;
-    std::vector<double> attributes;      // size() * attribute_count
-    std::vector<int> markers;            // empty: the file had no markers
+    std::vector<double> attributes;  // size() * attribute_count
+    std::vector<int> markers;        // empty: the file had no markers
 
     std::size_t size() const noexcept { return xy.size() / 2; }
     bool has_markers() const noexcept { return !markers.empty(); }
@@ -40,10 +40,10 @@ struct Region {
 };
 
 struct PolyFile {
-    NodeSet nodes;                   // read from the .node file when the .poly's count is 0
+    NodeSet nodes;                      // read from the .node file when the .poly's count is 0
     bool nodes_from_node_file = false;  // ... as it was then (output: write the count 0)
     SegmentSet segments;
-    std::vector<double> holes;       // x0, y0, x1, y1, ...
+    std::vector<double> holes;  // x0, y0, x1, y1, ...
     std::vector<Region> regions;
 };
 
@@ -52,7 +52,7 @@ struct EleSet {
     std::uint32_t corners_per_triangle = 3;  // 3 or 6
     std::vector<std::uint32_t> corners;      // corners_per_triangle per triangle, 0-based
     std::uint32_t attribute_count = 0;
-    std::vector<double> attributes;          // size() * attribute_count
+    std::vector<double> attributes;  // size() * attribute_count
 
     std::size_t size() const noexcept {
         return corners_per_triangle == 0 ? 0 : corners.size() / corners_per_triangle;

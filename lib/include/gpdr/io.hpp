@@ -65,8 +65,8 @@ ReadResult<EdgeSet> read_edge(const std::string& path, int base, std::size_t ver
                               const WarningSink& warn);
 
 // A .neigh file for triangle_count triangles; -1 reads as NeighbourSet::none.
-ReadResult<NeighbourSet> read_neigh(const std::string& path, int base,
-                                    std::size_t triangle_count, const WarningSink& warn);
+ReadResult<NeighbourSet> read_neigh(const std::string& path, int base, std::size_t triangle_count,
+                                    const WarningSink& warn);
 
 // Edges of a Voronoi diagram (.v.edge): a finite edge joins two Voronoi
 // vertices; a ray starts at one and runs off in a direction.
@@ -80,8 +80,7 @@ struct VoronoiEdgeSet {
 
 // A .v.edge file whose .v.node has vertex_count vertices.
 ReadResult<VoronoiEdgeSet> read_voronoi_edge(const std::string& path, int base,
-                                             std::size_t vertex_count,
-                                             const WarningSink& warn);
+                                             std::size_t vertex_count, const WarningSink& warn);
 
 // ---------------------------------------------------------------- writing
 
@@ -157,8 +156,8 @@ void write_area(OutputTransaction& out, const std::string& path, const AreaSet& 
 void write_edge(OutputTransaction& out, const std::string& path, const EdgeSet& edges,
                 const WriteFormat& format);
 
-void write_neigh(OutputTransaction& out, const std::string& path,
-                 const NeighbourSet& neighbours, const WriteFormat& format);
+void write_neigh(OutputTransaction& out, const std::string& path, const NeighbourSet& neighbours,
+                 const WriteFormat& format);
 
 // Geomview's .off: always numbered from 0 (format.base is ignored); the
 // edge count in the header is the caller's (Triangle writes its edge count).

@@ -16,9 +16,9 @@ struct JobResult {
     std::vector<std::string> files_written;  // in the order they were renamed into place
 
     std::uint64_t input_vertices = 0;
-    std::uint64_t vertices = 0;   // in the output mesh
+    std::uint64_t vertices = 0;  // in the output mesh
     std::uint64_t triangles = 0;
-    std::uint64_t segments = 0;   // subsegments in the output mesh
+    std::uint64_t segments = 0;  // subsegments in the output mesh
     std::uint64_t edges = 0;
     std::uint64_t hull_edges = 0;
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Delaunay triangulation of uniform random points (issue 3's benchmark):
+# Delaunay triangulation of uniform random points :
 #
 #   scripts/bench-delaunay.sh [N ...]          default: 1000000 10000000
 #   TRIANGLE=/tmp/triangle/triangle scripts/bench-delaunay.sh

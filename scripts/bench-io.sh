@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Reading and writing Triangle's files at scale (issue 2's benchmark): the
+# Reading and writing Triangle's files at scale the
 # Delaunay triangulation of N random points (about 2N triangles) is written
 # as .node/.ele, then read back with -r (no output: -NEP).  Prints each
 # program's "Output milliseconds" for the write and gpdr's "Read

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Constrained Delaunay triangulation of a large PSLG (issue 4's benchmark): a
+# Constrained Delaunay triangulation of a large PSLG a
 # fractal coastline with 100 islands (scripts/make-coastline.py), -p only.
 #
 #   scripts/bench-pslg.sh [SEGMENTS ...]        default: 1000000

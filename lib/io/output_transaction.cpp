@@ -3,7 +3,7 @@
 // one file system and is atomic) and renamed into place only by commit();
 // a transaction that is destroyed first removes its temporaries, so a failed
 // run never leaves a truncated file nor clobbers the result of an earlier one
-// (DESIGN.md, "Errors and files").
+// (docs/design.md, "Errors and files").
 
 #include <atomic>
 #include <cerrno>

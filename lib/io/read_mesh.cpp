@@ -1,6 +1,6 @@
 // Readers of the files that describe a mesh over known vertices: .ele,
 // .area, .edge, .neigh and the Voronoi .v.edge (Triangle 1.6's formats, see
-// /work/shared/TRIANGLE-COMPAT.md).  Defaults follow Triangle: an .ele
+// docs/file-formats.md).  Defaults follow Triangle: an .ele
 // header without corner or attribute count means 3 and 0, a missing triangle
 // attribute is 0, an .area line without a value means no bound (-1).  Every
 // index is checked against the numbering base and the list it points into.

@@ -1,5 +1,5 @@
 // Readers of .node and .poly files (Triangle 1.6's formats, as described in
-// /work/shared/TRIANGLE-COMPAT.md).  Missing optional values take Triangle's
+// docs/file-formats.md).  Missing optional values take Triangle's
 // defaults: header dimension 2, no attributes, no markers; a missing vertex
 // attribute or marker is 0; a region line with one value after x y uses it
 // as both attribute and area bound (Triangle does the same).  Where Triangle

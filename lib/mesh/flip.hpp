@@ -1,7 +1,8 @@
 #pragma once
 // The 2-2 edge flip (Lawson): replace the diagonal of a convex quadrilateral
-// by the other one.  Used by tests and later by segment recovery (CDT) and
-// any local repair; Bowyer–Watson does not need it.
+// by the other one.  Used by Lawson's algorithm (triangulate/lawson.hpp) and
+// by the repairs after a subsegment split (split_subsegment.hpp);
+// Bowyer–Watson insertion does not need it.
 //
 /*
             c                         c

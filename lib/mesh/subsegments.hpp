@@ -28,7 +28,7 @@ namespace gpdr::mesh {
 struct SubsegmentInfo {
     static constexpr std::uint32_t no_segment = 0xFFFFFFFFu;
 
-    int marker = 0;                      // boundary marker (Triangle's rules, TRIANGLE-COMPAT.md)
+    int marker = 0;                      // boundary marker (Triangle's rules, docs/file-formats.md)
     std::uint32_t segment = no_segment;  // index of the input segment it lies on
 
     friend bool operator==(const SubsegmentInfo&, const SubsegmentInfo&) = default;

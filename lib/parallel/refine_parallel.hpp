@@ -80,15 +80,13 @@ struct ParallelOptions {
     bool one_leaf_for_one_thread = false;
 };
 
-// Granularity when none is given, for `threads` workers, by measurement.
-// On 2 cores (scripts/bench-graded.sh, interleaved rounds): -g5 refined the
-// graded pipe (15M triangles) with -j2 in a median 0.53x -j1's time over six
-// rounds against 0.59x for -g4, and a uniform square (15M) in 0.51-0.57x
-// against 0.53-0.70x: with two workers fewer, larger leaves (1,750 against
-// 6,400 on the pipe) cost less upkeep and still balance.  -g1 and -g2 make
-// so many small leaves that the master and the leaves' memory dominate;
-// -g6 balances worse.  More workers need more leaves: -g4 is what an
-// earlier session measured on 16 cores (-g3 was no faster there).
+// Granularity when none is given, for `threads` workers, by measurement
+// (docs/performance.md, "Parallel refinement"): with two workers -g5's
+// fewer, larger leaves (1,750 against -g4's 6,400 on the graded pipe) cost
+// less upkeep and still balance, and refine faster than -g4; -g1 and -g2
+// make so many small leaves that the master and the leaves' memory
+// dominate; -g6 balances worse.  More workers need more leaves: on 16
+// cores -g4 was the fastest (-g3 no faster).
 inline unsigned default_granularity(unsigned threads) { return threads <= 2 ? 5 : 4; }
 
 // Refines `mesh` (the input refine::refine_mesh takes) in parallel.  Throws

@@ -1,7 +1,7 @@
 #pragma once
-// The master's scheduling decisions, in one place (DESIGN.md: a later goal
-// is the same output for any thread count, which will change only this
-// class): which leaf a free worker gets, and what happens when it returns.
+// The master's scheduling decisions, in one place: which leaf a free worker
+// gets, and what happens when it returns (docs/design.md, "Parallel
+// refinement").
 //
 // Buffer zones.  BUF(L) = { L' != L : dist(L, L') < (ℓe(L) + ℓe(L'))/2 },
 // Z(L) = {L} ∪ BUF(L) (quadtree.hpp for ℓe; ℓe = ℓ while relation (9)

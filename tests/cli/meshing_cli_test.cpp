@@ -202,7 +202,7 @@ TEST_CASE("the statistics of -V are the same on one thread and on several",
 
 namespace {
 
-// Every switch combination of issue 4 (-c, -D, -O, -A) and two refinements,
+// Every combination of the PSLG switches -c, -D, -O and -A and two refinements,
 // each checked by -C (topology, orientation, constrained Delaunay, segment
 // conformity), on every .poly in `folder`.
 void mesh_every_sample(const std::filesystem::path& folder) {

@@ -1,7 +1,7 @@
 // Hidden benchmark ("[.bench]"): write and read back a mesh of 10 million
 // triangles over 5 million vertices with random coordinates, as .node +
 // .ele, and report the seconds for each step.  Run with
-//   build-io/tests/test_io "[.bench]"
+//   build/tests/test_io "[.bench]"
 // The triangles are random vertex triples: the files' size and shape match a
 // real mesh's, which is all the I/O sees.
 

@@ -42,7 +42,8 @@ public:
     using Error::Error;
 };
 
-// A switch or feature that a later version delivers.  Never ignored silently.
+// A request beyond what gpdr provides (e.g. more distinct triangle attribute
+// tuples than a triangle's region field holds).  Reported, never ignored.
 class NotImplemented : public Error {
 public:
     using Error::Error;

@@ -1,7 +1,7 @@
 #pragma once
 // Reading and writing Triangle 1.6's files (.node, .poly, .ele, .area,
 // .edge, .neigh, .off, .v.node, .v.edge), following
-// /work/shared/TRIANGLE-COMPAT.md and Triangle's own format documentation.
+// docs/file-formats.md.
 //
 // Readers throw gpdr::InputError(file, line, reason) on anything malformed
 // and report harmless oddities (non-consecutive ids, a segment with equal

@@ -226,8 +226,8 @@ void IdChecker::check(TextReader& in, std::int64_t id, std::size_t k, const Warn
     in.warn(warn, std::string(kind_) + " number " + std::to_string(id) + " where " +
                       std::to_string(expected) +
                       " was expected; ids are not consecutive (gpdr, like Triangle, numbers " +
-                      std::string(kind_) +
-                      "s by their order in the file; further jumps in this "
+                      (kind_ == "vertex" ? std::string("vertices") : std::string(kind_) + "s") +
+                      " by their order in the file; further jumps in this "
                       "file are not reported)");
 }
 

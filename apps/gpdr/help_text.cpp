@@ -1,7 +1,13 @@
 // gpdr's usage, help and version texts.  The switch list follows the order
 // of Triangle 1.6's help so that its users find each letter where they expect
-// it; the wording is gpdr's own.  man/gpdr.1 says the same at more length:
-// keep the two in step.
+// it; the wording is gpdr's own.  man/gpdr.1 says the same at more length.
+//
+// tests/cli/switch_reference_test.cpp checks the help's switch reference
+// against the parser: it runs from "Switches:" through every block (an
+// unindented header and the indented lines under it) whose first indented
+// line is an entry, and an entry is a line starting with two spaces and a
+// dash that names its switches separated by ", " ("  -jN, --threads N").
+// Every switch letter and long option the parser accepts needs an entry.
 #include "help_text.hpp"
 
 #include <fmt/format.h>
@@ -82,7 +88,8 @@ std::string help_text() {
            "  -C        Check the final mesh (topology, orientation, Delaunay property).\n"
            "  -Q        Quiet: print no \"Wrote\" lines and no warnings.\n"
            "  -V        Verbose: print statistics; repeat (-VV, -VVV) for more.\n"
-           "  -h        Print this help and exit.\n"
+           "  -h, -H, -?\n"
+           "            Print this help and exit; the rest of the command line is not read.\n"
            "\n"
            "gpdr's own (a digit right after j, g or P; bare they mean the above):\n"
            "  -jN, --threads N       Refine with N worker threads and a master thread (0: one\n"

@@ -28,8 +28,10 @@ refine::RefineSettings refine_settings(const Options& o, const JobPlugins& plugi
     refine::RefineSettings s;
     if (o.quality) s.criteria.min_angle_degrees = o.min_angle;
     if (o.area_limit) s.criteria.max_area = o.max_area;
-    if (o.regional_area && poly) {
+    if (o.regional_area && poly && !o.refine) {
         // The CDT numbers region i of the .poly as i + 1; 0 is "no region".
+        // With -r the triangles carry the .ele's attributes instead, and a
+        // bare -a means the .area file (Triangle ignores the regions too).
         s.criteria.region_max_area.assign(poly->regions.size() + 1, -1.0);
         for (std::size_t i = 0; i < poly->regions.size(); ++i)
             s.criteria.region_max_area[i + 1] = poly->regions[i].max_area;
@@ -37,9 +39,9 @@ refine::RefineSettings refine_settings(const Options& o, const JobPlugins& plugi
     if (o.user_test) {
         if (!plugins.triunsuitable)
             throw UsageError(
-                "-u needs a triunsuitable() function: load one with --unsuitable PATH.so (built "
-                "with "
-                "'cc -shared -fPIC -O2 -o PATH.so yours.c'), or link it into gpdr (cmake "
+                "-u needs a triunsuitable() function: load one with --unsuitable PATH.so "
+                "(built with 'cc -shared -fPIC -O2 -o PATH.so yours.c'), or link it into gpdr "
+                "(cmake "
                 "-DGPDR_TRIUNSUITABLE=yours.c; see README, \"Grading with triunsuitable()\")");
         s.criteria.user_test = plugins.triunsuitable;
     }

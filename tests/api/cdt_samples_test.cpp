@@ -1,5 +1,5 @@
-// Every .poly sample (Triangle's classic ones in ../shared/samples and the
-// project's poly-samples) through the CDT, with and without -c and -O: the
+// Every .poly sample (the tests' inputs in tests/data and the project's
+// poly-samples) through the CDT, with and without -c and -O: the
 // result passes check_mesh and the segment conformity check.
 
 #include <catch2/catch.hpp>
@@ -42,7 +42,7 @@ void check_samples(const std::vector<fs::path>& files) {
             INFO(file.filename().string() << " convex_hull=" << options.convex_hull
                                           << " ignore_holes=" << options.ignore_holes);
             if (options.convex_hull)
-                CHECK(m.count_triangles() > 0);  // box.poly without -c is all eaten
+                CHECK(m.count_triangles() > 0);  // box_hole.poly without -c is all eaten
             const auto problems = mesh::check_mesh(m);
             for (const auto& p : problems) INFO(p);
             CHECK(problems.empty());
@@ -55,14 +55,9 @@ void check_samples(const std::vector<fs::path>& files) {
 
 }  // namespace
 
-TEST_CASE("Triangle's sample PSLGs triangulate into valid conforming CDTs", "[api][cdt][samples]") {
-    const fs::path shared = test::shared_samples();
-    if (shared.empty()) {
-        WARN("../shared/samples is absent: Triangle's samples not checked");
-        return;
-    }
-    const auto files = poly_files(shared);
-    CHECK(!files.empty());
+TEST_CASE("the test data PSLGs triangulate into valid conforming CDTs", "[api][cdt][samples]") {
+    const auto files = poly_files(test::test_data());
+    REQUIRE(!files.empty());
     check_samples(files);
 }
 

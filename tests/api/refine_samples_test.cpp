@@ -1,5 +1,5 @@
 // Quality refinement on every .poly sample (the project's poly-samples and
-// Triangle's classic ones in ../shared/samples), for angle bounds 0 to 33
+// the tests' inputs in tests/data), for angle bounds 0 to 33
 // degrees, with and without an area bound, for each placement strategy: the
 // result passes the invariant checker and the segment conformity check, and
 // every triangle meets the angle bound (unless a small input angle protects
@@ -67,7 +67,7 @@ void refine_and_check(const fs::path& file) {
             if (angle == 0 && area < 0) continue;  // nothing to refine
             for (const Placement placement :
                  {Placement::circumcentre, Placement::off_centre, Placement::optimisation}) {
-                // -c so that box.poly (no closed boundary) has a mesh too.
+                // -c so that box_hole.poly (no closed boundary) has a mesh too.
                 triangulate::CdtOptions cdt;
                 cdt.convex_hull = true;
                 triangulate::CdtReport report;
@@ -125,11 +125,8 @@ TEST_CASE("refinement meets the bounds on the project's samples", "[api][refine]
     for (const auto& file : poly_files(test::project_samples())) refine_and_check(file);
 }
 
-TEST_CASE("refinement meets the bounds on Triangle's classic samples", "[api][refine][samples]") {
-    const auto shared = test::shared_samples();
-    if (shared.empty()) {
-        WARN("../shared/samples is absent: skipped");
-        return;
-    }
-    for (const auto& file : poly_files(shared)) refine_and_check(file);
+TEST_CASE("refinement meets the bounds on the test data samples", "[api][refine][samples]") {
+    const auto files = poly_files(test::test_data());
+    REQUIRE(!files.empty());
+    for (const auto& file : files) refine_and_check(file);
 }

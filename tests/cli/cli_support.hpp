@@ -94,11 +94,8 @@ inline RunResult run_gpdr(const TempDir& dir, const std::string& args) {
 inline fs::path source_dir() { return GPDR_SOURCE_DIR; }
 inline fs::path project_samples() { return source_dir() / "poly-samples"; }
 
-// Triangle's classic samples in ../shared/samples, or an empty path when the
-// folder is not beside the checkout (tests then report themselves skipped).
-inline fs::path shared_samples() {
-    const fs::path p = GPDR_SHARED_SAMPLES;
-    return fs::is_directory(p) ? fs::canonical(p) : fs::path{};
-}
+// The tests' inputs in tests/data (made by scripts/make-samples.py): PSLGs
+// with holes, regions, attributes and markers, and .node point sets.
+inline fs::path test_data() { return source_dir() / "tests" / "data"; }
 
 }  // namespace gpdr::test

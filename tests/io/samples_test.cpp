@@ -1,10 +1,12 @@
-// Triangle's classic sample inputs (../shared/samples) all read without
-// error, and read back identically after a write.  Skipped, with a warning,
-// where that folder is absent.
+// The sample inputs in tests/data all read without error, and read back
+// identically after a write; between them they use every optional part of
+// the .node and .poly formats.
 
 #include <catch2/catch.hpp>
 
 #include <filesystem>
+#include <set>
+#include <string>
 
 #include <gpdr/io.hpp>
 
@@ -12,13 +14,15 @@
 
 using namespace gpdr;
 
-TEST_CASE("every classic sample reads without error", "[io][samples]") {
-    const auto samples = test::shared_samples();
-    if (samples.empty()) {
-        WARN("SKIPPED: ../shared/samples is absent");
-        return;
-    }
+TEST_CASE("every test data sample reads without error", "[io][samples]") {
+    const auto samples = test::test_data();
     std::size_t read = 0;
+    std::set<std::string> seen;  // the optional parts of the formats met so far
+    const auto note = [&](const NodeSet& nodes, int base) {
+        if (nodes.attribute_count > 0) seen.insert("vertex attributes");
+        seen.insert(nodes.has_markers() ? "vertex markers" : "no vertex markers");
+        if (base == 0) seen.insert("numbered from 0");
+    };
     for (const auto& entry : std::filesystem::directory_iterator(samples)) {
         const auto path = entry.path();
         const auto ext = path.extension().string();
@@ -30,6 +34,8 @@ TEST_CASE("every classic sample reads without error", "[io][samples]") {
         if (ext == ".node") {
             const auto r = io::read_node(path.string(), log.sink());
             CHECK(r.data.size() > 0);
+            seen.insert(".node");
+            note(r.data, r.base);
             io::OutputTransaction tx;
             io::write_node(tx, out, r.data, {r.base, true, "gpdr test"});
             tx.commit();
@@ -41,6 +47,12 @@ TEST_CASE("every classic sample reads without error", "[io][samples]") {
         } else {
             const auto r = io::read_poly(path.string(), log.sink());
             CHECK(r.data.nodes.size() > 0);
+            seen.insert(".poly");
+            note(r.data.nodes, r.base);
+            if (r.data.nodes_from_node_file) seen.insert("vertices from the .node");
+            seen.insert(r.data.segments.has_markers() ? "segment markers" : "no segment markers");
+            if (!r.data.holes.empty()) seen.insert("holes");
+            if (!r.data.regions.empty()) seen.insert("regions");
             io::OutputTransaction tx;
             io::write_poly(tx, out, r.data, {r.base, true, "gpdr test"});
             if (r.data.nodes_from_node_file)
@@ -59,4 +71,10 @@ TEST_CASE("every classic sample reads without error", "[io][samples]") {
         ++read;
     }
     CHECK(read >= 1);
+    for (const char* part : {".node", ".poly", "vertex attributes", "vertex markers",
+                             "no vertex markers", "numbered from 0", "vertices from the .node",
+                             "segment markers", "no segment markers", "holes", "regions"}) {
+        INFO(part);
+        CHECK(seen.count(part) == 1);
+    }
 }

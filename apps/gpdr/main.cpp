@@ -17,6 +17,7 @@
 #include "command_line.hpp"
 #include "help_text.hpp"
 #include "report.hpp"
+#include "signals.hpp"
 #include "unsuitable.hpp"
 
 namespace {
@@ -37,6 +38,7 @@ int run(int argc, const char* const* argv) {
         case CommandLine::Action::run:
             break;
     }
+    gpdr::app::remove_temporaries_on_signals();
     // &triunsuitable is null unless the user linked one in; the weak
     // reference is taken here, in main's object (see unsuitable.hpp).
     const gpdr::app::LoadedPlugins loaded = gpdr::app::load_plugins(line.options, &triunsuitable);

@@ -15,6 +15,7 @@
 #include <gpdr/io.hpp>
 
 #include "api/job_stages.hpp"
+#include "io/temporary_files.hpp"
 #include "mesh/traverse.hpp"
 #include "parallel/refine_parallel.hpp"
 
@@ -70,6 +71,8 @@ void write_all(const std::vector<FileJob>& jobs, unsigned threads) {
     }
     for (const std::exception_ptr& f : failures)
         if (f) std::rethrow_exception(f);
+    // All files or none: a SIGINT, SIGTERM or SIGHUP waits for the renames.
+    const io::detail::SignalsHeld held;
     for (std::size_t j = 0; j < n; ++j) transactions[j].commit();
 }
 

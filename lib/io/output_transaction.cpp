@@ -3,8 +3,11 @@
 // one file system and is atomic) and renamed into place only by commit();
 // a transaction that is destroyed first removes its temporaries, so a failed
 // run never leaves a truncated file nor clobbers the result of an earlier one
-// (docs/design.md, "Errors and files").
+// (docs/design.md, "Errors and files").  Each file is synced to the disk
+// before its rename and the folders after them, and every temporary is
+// listed where a signal handler can remove it (temporary_files.hpp).
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
@@ -43,6 +46,7 @@ OutputTransaction::File::File(std::string target) : target_(std::move(target)) {
         throw OutputError("cannot write " + target_ + ": not a file name");
     for (int attempt = 0;; ++attempt) {
         temporary_ = temporary_name(target_);
+        listed_.emplace(temporary_.c_str(), temporary_.size());
         // 0666: the file gets the permissions the user's umask gives new files.
         const int fd = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
         if (fd >= 0) {
@@ -55,8 +59,9 @@ OutputTransaction::File::File(std::string target) : target_(std::move(target)) {
             }
             break;
         }
-        if (errno != EEXIST || attempt > 100) {
-            const int err = errno;
+        const int err = errno;
+        listed_.reset();
+        if (err != EEXIST || attempt > 100) {
             temporary_.clear();  // nothing of ours to remove
             fail(err, "cannot create");
         }
@@ -88,6 +93,9 @@ void OutputTransaction::File::finish(std::string_view command) {
     buffer_.push_back('\n');
     flush();
     if (std::fflush(stream_) != 0) fail(errno, "cannot write");
+    // On the disk before the rename makes it visible: a crash or power cut
+    // after "Wrote FILE" must not leave an empty or partial file there.
+    if (::fsync(::fileno(stream_)) != 0) fail(errno, "cannot write");
     std::FILE* s = stream_;
     stream_ = nullptr;
     if (std::fclose(s) != 0) fail(errno, "cannot write");
@@ -103,6 +111,7 @@ void OutputTransaction::File::discard() noexcept {
     }
     if (!temporary_.empty()) ::unlink(temporary_.c_str());
     temporary_.clear();
+    listed_.reset();
 }
 
 OutputTransaction::OutputTransaction() = default;
@@ -134,8 +143,29 @@ void OutputTransaction::commit() {
             files_.erase(files_.begin(), files_.begin() + static_cast<std::ptrdiff_t>(i));
             throw error;
         }
+        f.renamed();
     }
     committed_ = true;
+    sync_folders();
+}
+
+// The renames are entries of the folders: force those to the disk too.  A
+// file system that cannot sync a folder (EINVAL) keeps its own guarantees,
+// and the files are complete either way, so failures here are not errors.
+void OutputTransaction::sync_folders() const noexcept {
+    std::vector<std::filesystem::path> folders;
+    for (const std::string& path : paths_) {
+        const std::filesystem::path folder =
+            (std::filesystem::path(path).parent_path() / ".").lexically_normal();
+        if (std::find(folders.begin(), folders.end(), folder) == folders.end())
+            folders.push_back(folder);
+    }
+    for (const std::filesystem::path& folder : folders) {
+        const int fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+        if (fd < 0) continue;
+        ::fsync(fd);
+        ::close(fd);
+    }
 }
 
 }  // namespace gpdr::io

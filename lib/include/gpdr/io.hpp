@@ -108,10 +108,18 @@ public:
     File& begin_file(const std::string& path);
 
 private:
+    void sync_folders() const noexcept;
+
     std::vector<std::unique_ptr<File>> files_;
     std::vector<std::string> paths_;
     bool committed_ = false;
 };
+
+// Removes every temporary file that an OutputTransaction of this process
+// has made and not yet renamed or removed.  Async-signal-safe: a program's
+// handler for SIGINT, SIGTERM or SIGHUP calls it before dying, so that a
+// killed run leaves no hidden temporary behind.
+void remove_temporary_files() noexcept;
 
 // What every writer needs besides the data.
 struct WriteFormat {

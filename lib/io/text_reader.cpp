@@ -3,6 +3,7 @@
 
 #include "io/text_reader.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -11,7 +12,10 @@
 #include <limits>
 #include <system_error>
 
+#include <fmt/format.h>
+
 #include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -23,50 +27,38 @@ bool is_blank(char c) noexcept {
     return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
 }
 
-std::string read_whole_file(const std::string& path, std::string_view why_needed) {
-    auto failure = [&](int err) {
-        std::string reason = "cannot read: ";
-        reason += std::strerror(err);
-        if (!why_needed.empty()) {
-            reason += " (";
-            reason += why_needed;
-            reason += ")";
-        }
-        return InputError(path, 0, std::move(reason));
-    };
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) throw failure(errno);
-    struct stat st {};
-    if (::fstat(fd, &st) != 0) {
-        const int err = errno;
-        ::close(fd);
-        throw failure(err);
-    }
-    if (S_ISDIR(st.st_mode)) {
-        ::close(fd);
-        throw failure(EISDIR);
-    }
-    std::string text;
-    // The size from fstat is a hint (a pipe or a growing file reports less);
-    // read until the end either way.
-    text.resize(st.st_size > 0 ? static_cast<std::size_t>(st.st_size) : 0);
-    std::size_t used = 0;
-    for (;;) {
-        if (used == text.size()) text.resize(text.size() + 65536);
-        const ssize_t got = ::read(fd, text.data() + used, text.size() - used);
-        if (got < 0) {
-            if (errno == EINTR) continue;
-            const int err = errno;
-            ::close(fd);
-            throw failure(err);
-        }
-        if (got == 0) break;
-        used += static_cast<std::size_t>(got);
-    }
-    ::close(fd);
-    text.resize(used);
-    return text;
+// Where a number that ends at p ends its field: p itself at a blank or the
+// end of the data, p + 1 at a comma followed by either (Triangle reads
+// "50, 2, 0, 0": each field is a number and what strtod leaves of it), or
+// null when the field goes on ("50,2" is one field and no number).
+const char* field_end(const char* p, const char* end) noexcept {
+    if (p == end || is_blank(*p)) return p;
+    if (*p == ',' && (p + 1 == end || is_blank(p[1]))) return p + 1;
+    return nullptr;
 }
+
+// A field without the comma that may end it.
+std::string_view without_comma(std::string_view field) noexcept {
+    if (field.size() > 1 && field.back() == ',') field.remove_suffix(1);
+    return field;
+}
+
+InputError read_failure(const std::string& path, std::string_view why_needed, std::string reason) {
+    if (!why_needed.empty()) {
+        reason += " (";
+        reason += why_needed;
+        reason += ")";
+    }
+    return InputError(path, 0, std::move(reason));
+}
+
+// Closes a file descriptor when it goes out of scope.
+struct Descriptor {
+    int fd;
+    ~Descriptor() {
+        if (fd >= 0) ::close(fd);
+    }
+};
 
 // Parses a whole token as a finite or infinite real, the way strtod would
 // for the decimal forms.  Returns false if the token is not a number.
@@ -83,9 +75,18 @@ bool parse_real(const char* b, const char* e, double& out) {
     return ec == std::errc{};
 }
 
+// A field for a message: at most 40 bytes, control bytes (a NUL would cut
+// the message short, an escape sequence would reach the terminal) written
+// as \xHH.
 std::string quoted(std::string_view token) {
     std::string s = "'";
-    s.append(token.substr(0, 40));
+    for (const char c : token.substr(0, 40)) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (byte < 0x20 || byte == 0x7f || c == '\\')
+            s += fmt::format("\\x{:02x}", byte);
+        else
+            s += c;
+    }
     if (token.size() > 40) s += "...";
     s += "'";
     return s;
@@ -93,8 +94,58 @@ std::string quoted(std::string_view token) {
 
 }  // namespace
 
+FileText::FileText(const std::string& path, std::string_view why_needed, std::size_t cap) {
+    const auto failure = [&](int err) {
+        return read_failure(path, why_needed, std::string("cannot read: ") + std::strerror(err));
+    };
+    const Descriptor file{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
+    if (file.fd < 0) throw failure(errno);
+    struct stat st {};
+    if (::fstat(file.fd, &st) != 0) throw failure(errno);
+    if (S_ISDIR(st.st_mode)) throw failure(EISDIR);
+    if (S_ISREG(st.st_mode)) {
+        if (st.st_size == 0) return;
+        const auto length = static_cast<std::size_t>(st.st_size);
+        void* map = ::mmap(nullptr, length, PROT_READ, MAP_PRIVATE, file.fd, 0);
+        if (map == MAP_FAILED) throw failure(errno);
+        ::madvise(map, length, MADV_SEQUENTIAL);
+        mapping_ = map;
+        data_ = static_cast<const char*>(map);
+        size_ = length;
+        return;
+    }
+    // Not a regular file: read what comes, growing the buffer geometrically,
+    // up to the cap.
+    std::size_t used = 0;
+    for (;;) {
+        if (used == owned_.size()) {
+            if (used >= cap)
+                throw read_failure(path, why_needed,
+                                   fmt::format("not a regular file, and longer than {} bytes: "
+                                               "not read",
+                                               cap));
+            owned_.resize(std::min(cap, std::max<std::size_t>(65536, 2 * used)));
+        }
+        const ssize_t got = ::read(file.fd, owned_.data() + used, owned_.size() - used);
+        if (got < 0) {
+            if (errno == EINTR) continue;
+            throw failure(errno);
+        }
+        if (got == 0) break;
+        used += static_cast<std::size_t>(got);
+    }
+    owned_.resize(used);
+    owned_.shrink_to_fit();
+    data_ = owned_.data();
+    size_ = owned_.size();
+}
+
+FileText::~FileText() {
+    if (mapping_ != nullptr) ::munmap(mapping_, size_);
+}
+
 TextReader::TextReader(std::string path, std::string_view why_needed)
-    : path_(std::move(path)), text_(read_whole_file(path_, why_needed)) {
+    : path_(std::move(path)), text_(path_, why_needed) {
     next_ = text_.data();
     pos_ = data_end_ = next_;
 }
@@ -148,17 +199,19 @@ double TextReader::real(std::string_view what) {
     double value = 0;
     // Fast path: from_chars stops at the blank ending the token.
     const auto [ptr, ec] = std::from_chars(pos_, data_end_, value, std::chars_format::general);
-    if (ec == std::errc{} && (ptr == data_end_ || is_blank(*ptr))) {
+    const char* end = ec == std::errc{} ? field_end(ptr, data_end_) : nullptr;
+    if (end != nullptr) {
         if (!std::isfinite(value))
             fail(std::string(what) + " " + quoted(token()) + " is not finite");
-        pos_ = ptr;
+        pos_ = end;
         return value;
     }
-    const std::string_view tok = token();
+    const std::string_view field = token();
+    const std::string_view tok = without_comma(field);
     if (!parse_real(tok.data(), tok.data() + tok.size(), value))
         fail(std::string(what) + " " + quoted(tok) + " is not a number");
     if (!std::isfinite(value)) fail(std::string(what) + " " + quoted(tok) + " is not finite");
-    pos_ = tok.data() + tok.size();
+    pos_ = field.data() + field.size();
     return value;
 }
 
@@ -167,19 +220,21 @@ std::int64_t TextReader::integer(std::string_view what) {
     if (pos_ == data_end_) fail(std::string(what) + " is missing");
     std::int64_t value = 0;
     const auto [ptr, ec] = std::from_chars(pos_, data_end_, value);
-    if (ec == std::errc{} && (ptr == data_end_ || is_blank(*ptr))) {
-        pos_ = ptr;
+    const char* end = ec == std::errc{} ? field_end(ptr, data_end_) : nullptr;
+    if (end != nullptr) {
+        pos_ = end;
         return value;
     }
     // Slow path: "+3", "3.0", "1e2" are integers written another way.
-    const std::string_view tok = token();
+    const std::string_view field = token();
+    const std::string_view tok = without_comma(field);
     double real_value = 0;
     constexpr double limit = 4611686018427387904.0;  // 2^62: far beyond any index or count
     if (!parse_real(tok.data(), tok.data() + tok.size(), real_value) ||
         !std::isfinite(real_value) || real_value != std::floor(real_value) ||
         std::fabs(real_value) > limit)
         fail(std::string(what) + " " + quoted(tok) + " is not an integer");
-    pos_ = tok.data() + tok.size();
+    pos_ = field.data() + field.size();
     return static_cast<std::int64_t>(real_value);
 }
 

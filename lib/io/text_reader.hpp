@@ -1,5 +1,6 @@
 #pragma once
-// A cursor over one of Triangle's text files, read into memory at once.
+// A cursor over one of Triangle's text files, mapped (or read) into memory
+// at once.
 //
 // Follows Triangle's reading rules (readline/findfield in triangle.c, as its
 // documentation describes them): `#` starts a comment running to the end of
@@ -8,6 +9,8 @@
 // stricter than Triangle in one way on purpose: a field that is read must be
 // a whole number token ("1.5abc" or "x" is an InputError, where Triangle
 // reads a prefix or skips the text), so typos cannot turn into silent zeros.
+// One comma may end a field ("50, 2, 0, 0"): Triangle reads such files, and
+// "50,2" stays an error (Triangle would read 50 and lose the 2).
 //
 // Deviation: numbers accept an exponent (1e-5) and an out-of-range value
 // reads the way strtod reads it (underflow towards 0, overflow to infinity,
@@ -23,6 +26,34 @@
 #include <gpdr/errors.hpp>
 
 namespace gpdr::io::detail {
+
+// The bytes of one input file.  A regular file is mapped, not copied: its
+// pages come from the page cache as the reader reaches them and can be
+// dropped again behind it, so a large file costs its parsed values and not
+// a second copy of its text.  Anything else (a pipe, a device) is read into
+// memory, at most max_unsized_bytes of it: /dev/zero is an error, not a
+// machine out of memory.
+class FileText {
+public:
+    static constexpr std::size_t max_unsized_bytes = std::size_t{1} << 30;
+
+    // InputError on line 0 if the file cannot be read, or is not regular
+    // and longer than `cap`; `why_needed` is appended to the reason.
+    FileText(const std::string& path, std::string_view why_needed,
+             std::size_t cap = max_unsized_bytes);
+    ~FileText();
+    FileText(const FileText&) = delete;
+    FileText& operator=(const FileText&) = delete;
+
+    const char* data() const noexcept { return data_; }
+    std::size_t size() const noexcept { return size_; }
+
+private:
+    const char* data_ = "";
+    std::size_t size_ = 0;
+    void* mapping_ = nullptr;  // munmap'ed by the destructor
+    std::string owned_;        // the bytes of a file that is not mapped
+};
 
 class TextReader {
 public:
@@ -67,7 +98,7 @@ private:
     void skip_blanks() noexcept;
 
     std::string path_;
-    std::string text_;
+    FileText text_;
     const char* pos_ = nullptr;       // cursor inside the current line
     const char* data_end_ = nullptr;  // end of the current line's data (comment cut off)
     const char* next_ = nullptr;      // start of the next line

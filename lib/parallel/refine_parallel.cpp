@@ -318,9 +318,8 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in
             const refine::TriangleMeasures m = refine::QualityTest::measure(
                 mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]));
             q.where = w.where(m.circle.centre);
-            w.push_poor(q, w.sigma(m.circle.radius_squared),
-                        run.quality().shape_rank(m.shortest.length_squared, m.circle.radius_squared,
-                                                 refine::Leaf::rank_count));
+            w.push_poor(q, w.slot(m.circle.radius_squared, m.shortest.length_squared,
+                                  refine::queued_by_shape(run.quality(), m)));
         }
         w.handed_off_triangles.clear();
     }

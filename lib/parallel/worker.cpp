@@ -296,8 +296,8 @@ void Worker::route_triangle(refine::QueuedTriangle q, bool steiner_point_if_cent
     r.triangle = q;
     r.at = m.circle.centre;
     r.radius_squared = m.circle.radius_squared;
-    r.rank = run_.quality().shape_rank(m.shortest.length_squared, m.circle.radius_squared,
-                                       refine::Leaf::rank_count);
+    r.shortest_squared = m.shortest.length_squared;
+    r.by_shape = refine::queued_by_shape(run_.quality(), m);
     // Classification routes by circumcentre, refinement by the Steiner
     // point f(t): a triangle handed off although its centre is inside was
     // handed off for its Steiner point, and one kept although its centre is
@@ -386,20 +386,20 @@ bool Worker::run(NodeId leaf, std::int32_t tag, const std::vector<NodeId>& balan
     tag_ = tag;
     Node& n = tree_.node(leaf);
     LeafState& state = *n.state;
-    // Fig. 4, one σ level at a time (levels i_min .. i_min + g at most), so
-    // that the leaf splits as soon as its work belongs to its children.
+    // Fig. 4 on the levels of the leaf's own triangles, i_min .. 1 + g (the
+    // leaf splits once its work lies at 2 + g and below: should_split),
+    // and, above 25 degrees, order_levels_beyond_split more, all in the
+    // leaf's order (shortest edges first over all of them: leaf.hpp); then
+    // the split, if its work now belongs to its children.
     const int granularity = static_cast<int>(run_.settings().granularity);
-    bool split_now = false;
-    for (int level = 0;; ++level) {
-        if (should_split(n, state)) {
-            split_now = true;
-            break;
-        }
-        const int lowest = state.work.lowest_level();
-        if (level > granularity || state.work.idle()) break;
-        if (!refiner_.refine_levels(state.work, lowest)) {
+    const int last_level =
+        1 + granularity + order_levels_beyond_split(run_.settings().criteria.min_angle_degrees);
+    bool split_now = should_split(n, state);
+    if (!split_now && !state.work.idle()) {
+        if (!refiner_.refine_levels(state.work, std::max(state.work.lowest_level(), last_level))) {
             stopped = true;
-            break;
+        } else {
+            split_now = should_split(n, state);
         }
     }
     sort_created();

@@ -37,9 +37,10 @@ struct Routed {
     bool is_triangle = true;
     refine::QueuedTriangle triangle{};
     refine::QueuedSubsegment subsegment{};
-    Point at;                   // the point that decides the leaf
-    double radius_squared = 0;  // triangles: for the target leaf's σ
-    int rank = 0;               // triangles: shape rank
+    Point at;                     // the point that decides the leaf
+    double radius_squared = 0;    // triangles: for the target leaf's slot,
+    double shortest_squared = 0;  // with the shortest edge²
+    bool by_shape = false;        // and refine::queued_by_shape
 };
 
 // Puts routed work into a leaf's lists (the worker for its own zone, the
@@ -48,7 +49,7 @@ inline void push(refine::Leaf& work, const Routed& r) {
     if (r.is_triangle) {
         refine::QueuedTriangle q = r.triangle;
         q.where = work.where(r.at);
-        work.push_poor(q, work.sigma(r.radius_squared), r.rank);
+        work.push_poor(q, work.slot(r.radius_squared, r.shortest_squared, r.by_shape));
     } else {
         work.push_subsegment(r.subsegment);
     }

@@ -1,37 +1,49 @@
 #pragma once
-// Leaf: the unit of refinement work (GPDR paper §3, Fig. 4).  A leaf of the
-// quadtree of side ℓ owns
-//   - PoorTriangles_i: poor triangles bucketed by σ = ⌊log2(ℓ / r)⌋ (r the
-//     circumradius), so the refiner takes the largest triangles first
-//     (smallest σ; Miller's order);
+// Leaf: the unit of refinement work (GPDR paper §3, Fig. 4).  A leaf owns
+//   - its poor triangles, in slots ordered by (level, bin), taken lowest
+//     first (see "The order" below);
 //   - the queue of subsegments to split (encroached, or in the way of a
 //     Steiner point).
 // Entries carry the triangle's generation; an entry whose triangle died
 // since (or whose slot holds another triangle now) is stale and skipped when
 // popped: nothing is ever searched for and removed.
 //
-// The sequential refiner is one leaf that never splits (refine.hpp).  The
-// parallel layer owns many leaves and runs refine_leaf on them from worker
-// threads; a leaf is touched by one thread at a time.  Its owned box says
-// whether a Steiner point or split point belongs to this leaf; what does
-// not is handed off (handed_off_*) for the scheduler to route.  With no
-// box, everything belongs to the leaf.
+// The order (docs/refinement-order.md).  The size of the mesh above 25
+// degrees depends mostly on the order in which poor triangles are split,
+// and the order that gives the smallest meshes is Triangle's: shortest edge
+// first.  The key of a triangle is the squared length of its shortest edge
+// l², in bins a factor √2 wide (edge_bin), the bin of the shortest edges
+// first, and first-in-first-out within a bin (a triangle whose split was
+// put off goes back to the tail of its bin).  Triangles that are poor only
+// by size (area bound or user test, no bad angle) wait in a separate
+// last-in-first-out bin after every other bin of their level, the size
+// bin: the newest was just made and is still in the cache.  (Taking them
+// by their edges' bins instead made the refinement of the graded pipe and
+// of a square under -a alone about 1.38 times slower, for meshes 0-1.1%
+// smaller under -a alone; docs/refinement-order.md.)
 //
-// Bucket σ is clamped to [0, bucket_count - 1]: σ < 0 (r > ℓ) never happens
-// under the paper's relation (9) and σ > 127 means r < ℓ 2^-127; clamping
-// only merges priorities at the extremes.
+// A flat leaf (the sequential refiner, Leaf::flat) has no σ levels: its
+// level is the top bits of the bin number, so the order is exactly the one
+// above over the whole mesh.  A quadtree leaf of side ℓ (the parallel
+// layer) first sorts by σ = ⌊log2(ℓ / r)⌋ (r the circumradius), the
+// largest triangles first (Miller's order, which keeps each run's cavities
+// inside its buffer zone), and within a σ level by the bin of l², counted
+// from the longest edge the level can hold (l² < 4 r² <= 4 ℓ² 4^-σ):
+// bin_count bins, the last of which also takes every shorter edge.
+// Levels are allocated on first use, and the table of them grows only as
+// far as the deepest level used (a quadtree leaf sees a handful of levels;
+// -g1 makes hundreds of thousands of leaves).
 //
-// Within one σ level the order is free as far as Miller's bound goes, and it
-// matters a great deal for the size of the mesh above 25 degrees: the worst
-// shaped triangles first (Triangle's order) gives meshes within a few
-// percent of Triangle's up to 30 degrees, where plain last-in-first-out gave
-// up to four times as many triangles at 33 degrees.  So each level holds
-// rank_count stacks by shape rank (QualityTest::shape_rank, 0 = worst).
-// Within a stack the newest goes first: it was just created, so it is still
-// in the cache (first-in-first-out was 1.6 times slower, for 1% fewer
-// triangles at 20 degrees).  Levels are allocated on first use, and the
-// table of them grows only as far as the deepest level used (a quadtree leaf
-// sees a handful of levels; -g1 makes hundreds of thousands of leaves).
+// The sequential refiner is one flat leaf.  The parallel layer owns many
+// leaves and runs refine_leaf on them from worker threads; a leaf is
+// touched by one thread at a time.  Its owned box says whether a Steiner
+// point or split point belongs to this leaf; what does not is handed off
+// (handed_off_*) for the scheduler to route.  With no box, everything
+// belongs to the leaf.
+//
+// σ is clamped to [0, bucket_count - 2]: σ < 0 (r > ℓ) never happens under
+// the paper's relation (9) and σ > 125 means r < ℓ 2^-125; clamping only
+// merges priorities at the extremes.
 
 #include <algorithm>
 #include <array>
@@ -70,12 +82,42 @@ struct QueuedSubsegment {
     bool forced;               // split even if no apex encroaches (a rejected point did)
 };
 
+// Where a poor triangle waits in a leaf: lower levels first, then lower
+// bins (Leaf::slot).
+struct PoorSlot {
+    int level = 0;
+    int bin = 0;
+};
+
 class Leaf {
 public:
-    static constexpr int bucket_count = 128;
-    static constexpr int rank_count = 64;
+    static constexpr int bucket_count = 128;  // levels
+    static constexpr int bin_count = 64;      // first-in-first-out bins per level
+    // The bin of a level that holds the triangles poor only by size (last
+    // in, first out, after every other bin of the level).
+    static constexpr int size_bin = bin_count;
 
-    explicit Leaf(double side = 1.0) : side_squared_(side * side), side_(side) {}
+    // A quadtree leaf of side `side` (levels by σ).
+    explicit Leaf(double side = 1.0)
+        : side_squared_(side * side), side_(side), top_bin_(edge_bin(side * side) + 4) {}
+    // The sequential refiner's leaf: no σ levels, the bins over the whole
+    // range of doubles.
+    static Leaf flat() {
+        Leaf leaf(1.0);
+        leaf.flat_ = true;
+        return leaf;
+    }
+    bool is_flat() const { return flat_; }
+
+    // ⌊log_√2(x)⌋ for finite x > 0: 2 e + (m >= √2) where x = m 2^e,
+    // 1 <= m < 2 (Triangle's bins); 0 and denormals give edge_bin(DBL_MIN)
+    // or below, infinity and NaN give the top bin.
+    static int edge_bin(double x) {
+        if (!(x >= 0x1p-1022)) return x >= 0 ? 2 * -1022 : 2 * 1024;
+        if (!(x <= 0x1.fffffffffffffp1023)) return 2 * 1024;
+        const int e = std::ilogb(x);
+        return 2 * e + (std::scalbn(x, -e) >= 1.4142135623730951 ? 1 : 0);
+    }
 
     double side() const { return side_; }
     // σ = ⌊log2(ℓ / r)⌋ from r², clamped (see above).
@@ -83,7 +125,24 @@ public:
         const double ratio = side_squared_ / radius_squared;
         if (!(ratio >= 1.0)) return 0;         // r >= ℓ, or not a number
         const int s = std::ilogb(ratio) >> 1;  // ⌊log2(ℓ²/r²)⌋ / 2, floored
-        return s < bucket_count ? s : bucket_count - 1;
+        return s < bucket_count - 1 ? s : bucket_count - 2;
+    }
+    // The slot of a poor triangle with circumradius² radius_squared and
+    // shortest edge² shortest_squared; by_shape: poor by its angle (else
+    // only by size: the size bin).
+    PoorSlot slot(double radius_squared, double shortest_squared, bool by_shape) const {
+        if (flat_) {
+            if (!by_shape) return {bucket_count - 1, size_bin};
+            // Bins -2044 .. 2048 (edge_bin's range), shortest first.
+            const int key = edge_bin(shortest_squared) + 2 * 1022;
+            return {key / bin_count, key % bin_count};
+        }
+        const int level = sigma(radius_squared);
+        if (!by_shape) return {level, size_bin};
+        // From the shortest edges (bin 0: bin_count - 1 bins or more below
+        // the level's top) to the longest (bin_count - 1).
+        const int below_top = top_bin_ - 4 * level - edge_bin(shortest_squared);
+        return {level, bin_count - 1 - std::clamp(below_top, 0, bin_count - 1)};
     }
 
     // The leaf's square's lower left corner (parallel layer): from then on
@@ -134,10 +193,9 @@ public:
     bool owns(const geometry::Point& p) const { return !has_box_ || box_.contains(p); }
 
     // ---- poor triangles ------------------------------------------------------
-    // Queues q at σ level `level` with shape rank `rank` (0 = worst shape).
-    void push_poor(QueuedTriangle q, int level, int rank = 0) {
-        stack(level, rank).push_back(q);
-        note_pushed(level, rank, 1);
+    void push_poor(QueuedTriangle q, PoorSlot at) {
+        bin(at).items.push_back(q);
+        note_pushed(at, 1);
     }
     // The lowest non-empty level, or -1.  (Stale entries count as entries.)
     int lowest_level() {
@@ -147,31 +205,77 @@ public:
         lowest_ = bucket_count;
         return -1;
     }
-    // Takes from level j the newest entry of the worst shape rank (stored in
-    // *rank when asked).
-    bool pop_poor(int j, QueuedTriangle& q, int* rank = nullptr) {
+    // Takes from level j the first entry of its lowest non-empty bin (the
+    // newest of the size bin), and says where it was in *at.
+    bool pop_poor(int j, QueuedTriangle& q, PoorSlot* at = nullptr) {
         if (j < 0 || static_cast<std::size_t>(j) >= levels_.size()) return false;
         Level* l = levels_[static_cast<std::size_t>(j)].get();
         if (!l || l->entries == 0) return false;
-        while (l->ranks[l->lowest_rank].empty()) ++l->lowest_rank;
-        if (rank != nullptr) *rank = l->lowest_rank;
-        std::vector<QueuedTriangle>& stack = l->ranks[l->lowest_rank];
-        q = stack.back();
-        stack.pop_back();
-        if (--l->entries == 0) l->lowest_rank = rank_count;
+        while (l->bins[l->lowest_bin].empty()) ++l->lowest_bin;
+        if (at != nullptr) *at = {j, l->lowest_bin};
+        Bin& b = l->bins[l->lowest_bin];
+        if (l->lowest_bin == size_bin) {
+            q = b.items.back();
+            b.items.pop_back();
+        } else {
+            q = b.items[b.head++];
+            if (b.head == b.items.size()) {
+                b.items.clear();
+                b.head = 0;
+            } else if (b.head >= 4096 && 2 * b.head >= b.items.size()) {
+                // Long-lived bins: drop the taken half (amortised O(1)).
+                b.items.erase(b.items.begin(), b.items.begin() + static_cast<long>(b.head));
+                b.head = 0;
+            }
+        }
+        if (--l->entries == 0) l->lowest_bin = bin_count + 1;
         --poor_entries_;
         return true;
     }
     std::size_t poor_entries() const { return poor_entries_; }
 
+    // The slot to take first among levels lowest_level() .. last_level: a
+    // flat leaf's lowest; a quadtree leaf's by shortest edge over the levels
+    // (edge bins compared across levels; size bins after every other bin,
+    // lowest level first).  False when the levels hold nothing.
+    bool first_slot(int last_level, PoorSlot& at) {
+        const int lowest = lowest_level();
+        if (lowest < 0 || lowest > last_level) return false;
+        if (flat_) {
+            Level* l = levels_[static_cast<std::size_t>(lowest)].get();
+            while (l->bins[l->lowest_bin].empty()) ++l->lowest_bin;
+            at = {lowest, l->lowest_bin};
+            return true;
+        }
+        const int last = std::min(last_level, static_cast<int>(levels_.size()) - 1);
+        long best = 0;
+        bool found = false;
+        for (int j = lowest; j <= last; ++j) {
+            Level* l = levels_[static_cast<std::size_t>(j)].get();
+            if (!l || l->entries == 0) continue;
+            while (l->bins[l->lowest_bin].empty()) ++l->lowest_bin;
+            // Edge bins by edge_bin(l²), the bin 0 of a level standing for
+            // bin_count - 1 below its top (Leaf::slot); size bins after
+            // every edge bin, lowest level first.
+            const int b = l->lowest_bin;
+            const long k = b == size_bin ? (1L << 20) + j : top_bin_ - 4L * j - (bin_count - 1 - b);
+            if (!found || k < best) {
+                best = k;
+                at = {j, l->lowest_bin};
+                found = true;
+            }
+        }
+        return found;
+    }
+
     // A split (parallel layer): moves every poor triangle to the child its
     // `where` names, at the σ level one down (the sides halve; σ is clamped
-    // at both ends) with the same shape rank, and empties this leaf's
-    // levels.  An entry whose path is used up goes to used_up(q) instead,
-    // to be placed afresh.  Each stack is copied straight onto the
-    // children's, newest first, so that they come out as popping this one
-    // and pushing each entry would leave them (the parallel refiner's order
-    // before: copying oldest first made the pipe's mesh 0.5% larger).
+    // at both ends) in the same bin (the child's level one down has the
+    // same top bin), and empties this leaf's levels.  An entry whose path
+    // is used up goes to used_up(q) instead, to be placed afresh.  Each bin
+    // is copied straight onto the children's in the order it would be
+    // taken (the size bins newest first), so that they come out as taking
+    // this leaf's entries one by one and pushing each would leave them.
     // (Popping and pushing entry by entry took about 15 ns an entry, 120 ms
     // of the graded pipe's -j2 run, whose splits move 7.8 million;
     // cachegrind at c = 1e-3: about 50 million fewer instructions.  Reserving
@@ -187,25 +291,28 @@ public:
             if (!l || l->entries == 0) continue;
             const int jj = static_cast<int>(j);
             const int child_level = jj == 0 || jj == bucket_count - 1 ? jj : jj - 1;
-            for (int r = l->lowest_rank; r < rank_count; ++r) {
-                const std::vector<QueuedTriangle>& stack = l->ranks[r];
-                if (stack.empty()) continue;
+            for (int r = l->lowest_bin; r <= size_bin; ++r) {
+                const Bin& b = l->bins[r];
+                if (b.empty()) continue;
                 std::vector<QueuedTriangle>* into[4] = {nullptr, nullptr, nullptr, nullptr};
                 std::size_t moved[4] = {0, 0, 0, 0};
-                for (auto it = stack.rbegin(); it != stack.rend(); ++it) {
-                    QueuedTriangle q = *it;
+                const auto move = [&](QueuedTriangle q) {
                     if (path_used_up(q.where)) {
                         used_up(q);
-                        continue;
+                        return;
                     }
                     const int c = first_quadrant(q.where);
                     q.where = in_child(q.where);
-                    if (into[c] == nullptr) into[c] = &children[c]->stack(child_level, r);
+                    if (into[c] == nullptr) into[c] = &children[c]->bin({child_level, r}).items;
                     into[c]->push_back(q);
                     ++moved[c];
-                }
+                };
+                if (r == size_bin)
+                    for (auto it = b.items.rbegin(); it != b.items.rend(); ++it) move(*it);
+                else
+                    for (std::size_t i = b.head; i < b.items.size(); ++i) move(b.items[i]);
                 for (int c = 0; c < 4; ++c)
-                    if (moved[c] != 0) children[c]->note_pushed(child_level, r, moved[c]);
+                    if (moved[c] != 0) children[c]->note_pushed({child_level, r}, moved[c]);
             }
         }
     }
@@ -246,25 +353,32 @@ private:
     geometry::Point corner_{};
     double cells_per_side_ = 0;  // 2^where_levels / ℓ
     bool has_corner_ = false;
+    bool flat_ = false;
+    int top_bin_ = 0;  // edge_bin(4 ℓ²): level 0's longest possible edges
+    struct Bin {
+        std::vector<QueuedTriangle> items;
+        std::size_t head = 0;  // items before it were taken (first-in-first-out bins)
+        bool empty() const { return head == items.size(); }
+    };
     struct Level {
-        std::array<std::vector<QueuedTriangle>, rank_count> ranks;
-        int lowest_rank = rank_count;
+        std::array<Bin, bin_count + 1> bins;  // the last: the size bin
+        int lowest_bin = bin_count + 1;
         std::size_t entries = 0;
     };
-    // Level `level`'s stack for `rank`, made if missing; entries pushed
-    // straight onto it are then counted by note_pushed.
-    std::vector<QueuedTriangle>& stack(int level, int rank) {
-        if (static_cast<std::size_t>(level) >= levels_.size())
-            levels_.resize(static_cast<std::size_t>(level) + 1);
-        auto& l = levels_[static_cast<std::size_t>(level)];
+    // The bin at `at`, made if missing; entries pushed straight into it are
+    // then counted by note_pushed.
+    Bin& bin(PoorSlot at) {
+        if (static_cast<std::size_t>(at.level) >= levels_.size())
+            levels_.resize(static_cast<std::size_t>(at.level) + 1);
+        auto& l = levels_[static_cast<std::size_t>(at.level)];
         if (!l) l = std::make_unique<Level>();
-        return l->ranks[rank];
+        return l->bins[static_cast<std::size_t>(at.bin)];
     }
-    void note_pushed(int level, int rank, std::size_t n) {
-        Level& l = *levels_[static_cast<std::size_t>(level)];
+    void note_pushed(PoorSlot at, std::size_t n) {
+        Level& l = *levels_[static_cast<std::size_t>(at.level)];
         l.entries += n;
-        if (rank < l.lowest_rank) l.lowest_rank = rank;
-        if (level < lowest_) lowest_ = level;
+        if (at.bin < l.lowest_bin) l.lowest_bin = at.bin;
+        if (at.level < lowest_) lowest_ = at.level;
         poor_entries_ += n;
     }
     std::vector<std::unique_ptr<Level>> levels_;  // by σ level, up to the deepest used

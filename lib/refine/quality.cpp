@@ -23,12 +23,16 @@ QualityTest::QualityTest(const QualityCriteria& criteria, SegmentEnds segments)
         rho_bar_ = std::numeric_limits<double>::infinity();
         rho_bar_squared_ = rho_bar_;
     }
-    // Diametral lenses of angle 180 - 2 theta need an angle bound and are not
-    // for conforming Delaunay (segments.hpp, encroaches()); above 45 degrees
-    // the lens would exceed the circle, so the circle is kept.
-    if (angle_test_ && !criteria_.diametral_circles)
-        lens_ =
-            std::max(0.0, std::cos(2.0 * criteria_.min_angle_degrees * std::numbers::pi / 180.0));
+    // Diametral lenses of angle 180 - 2 theta (segments.hpp, encroaches()),
+    // as Triangle has them: not for conforming Delaunay (-D: circles); above
+    // 45 degrees the lens would exceed the circle, so the circle is kept;
+    // without an angle bound the lens is empty (theta = 0: cos 0 = 1), so
+    // that refining by size alone splits a subsegment only when a Steiner
+    // point lies on it or beyond it.
+    if (!criteria_.diametral_circles)
+        lens_ = angle_test_ ? std::max(0.0, std::cos(2.0 * criteria_.min_angle_degrees *
+                                                     std::numbers::pi / 180.0))
+                            : 1.0;
     bool regional = false;
     for (double a : criteria_.region_max_area) regional = regional || a > 0;
     area_test_ = criteria_.max_area > 0 || regional || criteria_.triangle_max_area != nullptr;

@@ -71,7 +71,8 @@ public:
     double rho_bar() const { return rho_bar_; }
     bool has_angle_test() const { return angle_test_; }
     // The `lens` argument of encroaches() (segments.hpp): cos(2 theta) for
-    // diametral lenses, 0 for diametral circles.
+    // diametral lenses, 0 for diametral circles, 1 (nothing encroaches)
+    // without an angle bound.
     double encroachment_lens() const { return lens_; }
     bool has_area_test() const { return area_test_; }
 
@@ -84,15 +85,6 @@ public:
     Poorness assess(const mesh::Mesh& mesh, mesh::TriangleId t, const TriangleMeasures& m,
                     bool* protected_angle = nullptr) const;
 
-    // Where a poor triangle goes within its σ level (leaf.hpp): 0 for the
-    // worst shapes up to Leaf::rank_count - 1 for triangles as good as the
-    // bound (or poor only by size), by rho_bar^2 l^2 / r^2 = sin^2 of the
-    // smallest angle over sin^2 of the bound.
-    int shape_rank(double shortest_squared, double radius_squared, int rank_count) const {
-        if (!angle_test_) return 0;
-        const double x = rho_bar_squared_ * shortest_squared / radius_squared;
-        return x >= 1.0 ? rank_count - 1 : static_cast<int>(x * (rank_count - 1));
-    }
     // Only the shape: r^2 > rho_bar^2 l^2.
     bool bad_shape(const TriangleMeasures& m) const {
         return angle_test_ &&

@@ -176,9 +176,8 @@ void LeafRefiner::classify(Leaf& leaf, TriangleId t, const TriangleMeasures& m) 
         // Poor triangles are routed by their circumcentre; the Steiner point
         // itself is checked again before it is inserted.
         if (leaf.owns(m.circle.centre))
-            leaf.push_poor(q, leaf.sigma(m.circle.radius_squared),
-                           quality_.shape_rank(m.shortest.length_squared, m.circle.radius_squared,
-                                               Leaf::rank_count));
+            leaf.push_poor(
+                q, leaf.slot(m.circle.radius_squared, m.shortest.length_squared, by_shape(m)));
         else
             leaf.handed_off_triangles.push_back(q);
     }
@@ -256,27 +255,27 @@ bool LeafRefiner::refine_leaf(Leaf& leaf) {
 bool LeafRefiner::refine_levels(Leaf& leaf, int last_level) {
     split_queued_subsegments(leaf);
     if (report_.stopped != RefineReport::Stop::none) return false;
-    const int lowest = leaf.lowest_level();
-    if (lowest < 0) return true;
     const int last = std::min(last_level, Leaf::bucket_count - 1);
-    for (int j = lowest; j <= last; ++j) {
+    // Always the first entry of the lowest slot: a split's new triangles
+    // may land in a lower slot than the one being emptied.
+    for (PoorSlot at; leaf.first_slot(last, at);) {
         QueuedTriangle q;
-        while (leaf.pop_poor(j, q)) {
-            const mesh::Triangle& r = mesh_.triangle(q.id);
-            if (r.load_generation() != q.generation || !r.live())
-                continue;  // stale (generation first: see Triangle)
-            if (report_.stopped != RefineReport::Stop::none) {
-                leaf.push_poor(q, j);
-                return false;
-            }
-            refine_triangle(leaf, q);
-            split_queued_subsegments(leaf);
+        leaf.pop_poor(at.level, q, &at);
+        const mesh::Triangle& r = mesh_.triangle(q.id);
+        if (r.load_generation() != q.generation || !r.live())
+            continue;  // stale (generation first: see Triangle)
+        if (report_.stopped != RefineReport::Stop::none) {
+            leaf.push_poor(q, at);
+            return false;
         }
+        refine_triangle(leaf, q, at);
+        split_queued_subsegments(leaf);
     }
     return report_.stopped == RefineReport::Stop::none;
 }
 
-void LeafRefiner::split_queued_subsegments(Leaf& leaf) {
+std::uint64_t LeafRefiner::split_queued_subsegments(Leaf& leaf) {
+    const std::uint64_t splits = report_.segment_splits;
     QueuedSubsegment s;
     while (leaf.pop_subsegment(s)) {
         const mesh::Triangle& r = mesh_.triangle(s.edge.triangle());
@@ -289,6 +288,7 @@ void LeafRefiner::split_queued_subsegments(Leaf& leaf) {
         if (!may_split(s.edge) || !budget_left()) continue;  // counted by the final pass
         split_subsegment(leaf, s.edge);
     }
+    return report_.segment_splits - splits;
 }
 
 bool LeafRefiner::split_subsegment(Leaf& leaf, EdgeRef e) {
@@ -341,7 +341,7 @@ bool LeafRefiner::split_subsegment(Leaf& leaf, EdgeRef e) {
     return true;
 }
 
-void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q) {
+void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q, PoorSlot at) {
     const PoorTriangle t = describe_poor_triangle(mesh_, q.id, quality_);
     if (t.shortest_length * t.shortest_length < run_.tiny_length_squared()) {
         give_up(q, reason_precision);
@@ -360,25 +360,31 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q) {
         leaf.handed_off_triangles.push_back(q);
         return;
     }
-    auto requeue_if_alive = [&] {
+    auto alive = [&] {
         const mesh::Triangle& r = mesh_.triangle(q.id);
-        if (r.load_generation() == q.generation && r.live())
-            leaf.push_poor(q, leaf.sigma(t.circle.radius_squared),
-                           quality_.shape_rank(t.shortest_length * t.shortest_length,
-                                               t.circle.radius_squared, Leaf::rank_count));
+        return r.load_generation() == q.generation && r.live();
     };
-    // When a subsegment in the way belongs to another leaf (its split point
+    // Back to the tail of its bin (Triangle's order).
+    auto requeue_if_alive = [&] {
+        if (alive()) leaf.push_poor(q, at);
+    };
+    // The subsegments in t's way split, t goes back to its bin if it
+    // survived.  When one of them belongs to another leaf (its split point
     // lies outside), t goes with it instead of back into this leaf, which
     // would take it again at once (parallel layer; never without a hook).
+    // When none could be split (too short for double precision, or a
+    // degenerate neighbourhood), nothing changed and nothing will: t is
+    // given up rather than queued again.
     auto split_queued_subsegments_then_requeue = [&] {
         const std::size_t handed = leaf.handed_off_subsegments.size();
-        split_queued_subsegments(leaf);
-        const mesh::Triangle& r = mesh_.triangle(q.id);
-        if (leaf.handed_off_subsegments.size() != handed && r.load_generation() == q.generation &&
-            r.live())
+        const std::uint64_t splits = split_queued_subsegments(leaf);
+        if (!alive()) return;
+        if (leaf.handed_off_subsegments.size() != handed)
             leaf.handed_off_triangles.push_back(q);
+        else if (splits == 0)
+            give_up(q, reason_precision);
         else
-            requeue_if_alive();
+            leaf.push_poor(q, at);
     };
     auto split_instead = [&](EdgeRef e) {
         leaf.push_subsegment({e, mesh_.triangle(e.triangle()).generation, true});
@@ -453,9 +459,7 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q) {
         return;
     }
     if (!insert) {  // the budget ran out
-        leaf.push_poor(q, leaf.sigma(t.circle.radius_squared),
-                       quality_.shape_rank(t.shortest_length * t.shortest_length,
-                                           t.circle.radius_squared, Leaf::rank_count));
+        leaf.push_poor(q, at);
         return;
     }
 
@@ -614,14 +618,8 @@ void count_left(const mesh::Mesh& mesh, const RefineRun& run,
 void refine_mesh(mesh::Mesh& mesh, const RefineSettings& settings, RefineReport& report) {
     RefineRun run(mesh, settings);
 
-    // The leaf must satisfy the paper's relation (9): side > 4 r_max.
-    double r_max_squared = 0;
-    mesh::for_each_triangle(mesh, [&](TriangleId, const mesh::Triangle& t) {
-        const double r2 = geometry::circumradius_squared(mesh.point(t.v[0]), mesh.point(t.v[1]),
-                                                         mesh.point(t.v[2]));
-        if (std::isfinite(r2)) r_max_squared = std::max(r_max_squared, r2);
-    });
-    Leaf leaf(r_max_squared > 0 ? 4.0 * std::sqrt(r_max_squared) * (1.0 + 0x1p-20) : 1.0);
+    // One flat leaf: Triangle's order over the whole mesh (leaf.hpp).
+    Leaf leaf = Leaf::flat();
 
     {
         mesh::Pool pool(mesh);

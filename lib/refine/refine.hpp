@@ -1,27 +1,33 @@
 #pragma once
 // Guaranteed-quality Delaunay refinement (Ruppert 1995, Shewchuk 1997/2002,
-// with Miller's largest-first order and the GPDR paper's selection disks).
+// with Triangle's shortest-edge-first order and the GPDR paper's selection
+// disks).
 //
 // The loop of one leaf (refine_leaf, the paper's Fig. 4):
 //   0. Split every subsegment in the queue: encroached ones (a vertex
-//      strictly inside the diametral circle), re-tested when popped, and
-//      "forced" ones that a rejected Steiner point encroached or that stood
-//      between a poor triangle and its Steiner point.  Split points are
-//      midpoints or concentric-shell points (segments.hpp).  Every split's
-//      new triangles are classified, which queues any subsegment the new
-//      vertex encroaches, so this runs until no subsegment is encroached.
-//   1. For σ = i_min .. i_min + granularity, while PoorTriangles_σ is not
-//      empty: take t, p = f(t) from the placement strategy (the circumcentre
-//      when the selection disk is empty);
+//      strictly inside the diametral lens, or circle with -D; without an
+//      angle bound no vertex encroaches, segments.hpp), re-tested when
+//      popped, and "forced" ones that a rejected Steiner point encroached
+//      or that stood between a poor triangle and its Steiner point.  Split
+//      points are midpoints or concentric-shell points (segments.hpp).
+//      Every split's new triangles are classified, which queues any
+//      subsegment the new vertex encroaches, so this runs until no
+//      subsegment is encroached.
+//   1. While the leaf's lowest slot (leaf.hpp: the bin of the shortest
+//      edges; a quadtree leaf first by σ level, up to i_min + granularity)
+//      holds a poor triangle: take the first, t, and p = f(t) from the
+//      placement strategy (the circumcentre when the selection disk is
+//      empty);
 //        - walk from t to p without crossing a subsegment; a subsegment (or
 //          hull edge) in the way is split instead (p lies outside the part
-//          of the domain t sees, or on the subsegment), and t re-queued if
-//          it survives;
+//          of the domain t sees, or on the subsegment), and t goes back to
+//          the tail of its bin if it survives;
 //        - search p's cavity; if p encroaches a subsegment on its boundary
 //          (Triangle's rule), p is not inserted: those subsegments are
-//          split instead (step 0), and t is re-queued if it survives;
+//          split instead (step 0), and t goes back to the tail of its bin
+//          if it survives;
 //        - otherwise p is inserted (Bowyer-Watson) and the new triangles
-//          are classified: poor ones queued at their σ, encroached
+//          are classified: poor ones queued in their slots, encroached
 //          subsegments queued.
 //      Step 0 runs after every poor triangle.
 //
@@ -34,10 +40,14 @@
 // Termination.  Below about 20.7° (rho_bar >= sqrt 2) the selection disk
 // theory guarantees it, except near small input angles, where the
 // small-angle rule (segments.hpp) leaves the forced triangles alone; in
-// practice it ends up to about 33°.  Whatever the bound, refinement always
-// ends: a triangle whose shortest edge is below 2^-40 of the domain's
-// diameter, or whose Steiner point would land on (or within 2^-40 r of) an
-// existing vertex, is left and counted as "precision"; and a safety budget
+// practice, in this order, it ends up to 34° and beyond.  Whatever the
+// bound, refinement always ends: every step inserts a vertex or splits a
+// subsegment, or gives the triangle up.  A triangle whose shortest edge is
+// below 2^-40 of the domain's diameter, whose Steiner point would land on
+// (or within 2^-40 r of) an existing vertex, or whose Steiner point is
+// rejected for subsegments none of which can be split (too short for
+// double precision, or a degenerate neighbourhood), is left and counted as
+// "precision" instead of being queued again; and a safety budget
 // of Steiner points derived from the input (RefineSettings::safety_limit)
 // stops the run with a valid mesh.  Either way the result is a valid
 // constrained Delaunay mesh and the report says what is left poor and why.
@@ -166,6 +176,12 @@ public:
                                   const geometry::Circle& circumcircle) = 0;
 };
 
+// Whether a poor triangle with measures m waits in a bin by its shortest
+// edge (else it is poor only by size and waits in its level's size bin).
+inline bool queued_by_shape(const QualityTest& quality, const TriangleMeasures& m) {
+    return quality.bad_shape(m);
+}
+
 // One thread's refiner: owns the pool, insertion buffer and scratch.
 class LeafRefiner {
 public:
@@ -184,8 +200,9 @@ public:
     // The same for levels i_min .. last_level (none when last_level < i_min,
     // but step 0 always runs).
     bool refine_levels(Leaf& leaf, int last_level);
-    // Splits queued subsegments until none is left (step 0).
-    void split_queued_subsegments(Leaf& leaf);
+    // Splits queued subsegments until none is left (step 0); returns how
+    // many it split.
+    std::uint64_t split_queued_subsegments(Leaf& leaf);
 
     // The triangles given up (id, generation, reason), for the final count.
     struct GivenUp {
@@ -201,7 +218,10 @@ public:
     void set_observer(MeshObserver* observer) { observer_ = observer; }
 
 private:
-    void refine_triangle(Leaf& leaf, QueuedTriangle q);
+    // Splits q's triangle, taken from slot `at` (where it goes back if its
+    // split is put off).
+    void refine_triangle(Leaf& leaf, QueuedTriangle q, PoorSlot at);
+    bool by_shape(const TriangleMeasures& m) const { return queued_by_shape(quality_, m); }
     bool split_subsegment(Leaf& leaf, mesh::EdgeRef e);
     bool may_split(mesh::EdgeRef e) const;
     bool budget_left();

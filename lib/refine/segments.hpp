@@ -79,12 +79,13 @@ inline mesh::VertexId other_end(const mesh::Mesh& mesh, mesh::EdgeRef e, mesh::V
 // refinement algorithms for triangular mesh generation", 2002): fewer
 // subsegment splits, the same guarantees; conforming Delaunay (-D) needs
 // circles.  With u = a - p, v = b - p the angle is above 180 - 2 theta when
-// u.v < 0 and (u.v)^2 > lens^2 |u|^2 |v|^2.
+// u.v < 0 and (u.v)^2 > lens^2 |u|^2 |v|^2.  lens >= 1 (the lens of an
+// angle bound of 0: refinement by size alone) is empty: nothing encroaches.
 inline bool encroaches(const geometry::Point& a, const geometry::Point& b, const geometry::Point& p,
                        double lens = 0.0) {
     const double ux = a.x - p.x, uy = a.y - p.y, vx = b.x - p.x, vy = b.y - p.y;
     const double dot = ux * vx + uy * vy;
-    if (dot >= 0) return false;
+    if (dot >= 0 || lens >= 1.0) return false;
     return lens == 0.0 || dot * dot > lens * lens * (ux * ux + uy * uy) * (vx * vx + vy * vy);
 }
 

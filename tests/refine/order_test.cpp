@@ -1,0 +1,149 @@
+// The order of refinement (refine/leaf.hpp): the queue gives the bin of the
+// shortest edges first, first-in-first-out within a bin, size-only
+// triangles last and newest first; quadtree leaves order by σ level first.
+
+#include <cmath>
+#include <map>
+#include <random>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "refine/leaf.hpp"
+
+namespace gpdr::refine {
+
+namespace {
+
+QueuedTriangle entry(std::uint32_t i) { return {mesh::TriangleId{i}, i, 0}; }
+
+std::vector<std::uint32_t> drain(Leaf& leaf) {
+    std::vector<std::uint32_t> out;
+    for (int j = leaf.lowest_level(); j >= 0; j = leaf.lowest_level()) {
+        QueuedTriangle q{};
+        REQUIRE(leaf.pop_poor(j, q));
+        out.push_back(q.generation);
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("edge_bin is the floor of the logarithm to base sqrt 2", "[refine][order]") {
+    CHECK(Leaf::edge_bin(1.0) == 0);
+    CHECK(Leaf::edge_bin(1.41421) == 0);
+    CHECK(Leaf::edge_bin(1.41422) == 1);
+    CHECK(Leaf::edge_bin(2.0) == 2);
+    CHECK(Leaf::edge_bin(0.5) == -2);
+    CHECK(Leaf::edge_bin(0.7) == -2);
+    CHECK(Leaf::edge_bin(0.71) == -1);
+    std::mt19937_64 random(5);
+    std::uniform_real_distribution<double> exponent(-300.0, 300.0);
+    for (int trial = 0; trial < 10000; ++trial) {
+        const double x = std::exp2(exponent(random));
+        const int b = Leaf::edge_bin(x);
+        // sqrt(2)^b <= x < sqrt(2)^(b+1), away from the boundaries.
+        const double l = 2.0 * std::log2(x);
+        if (std::abs(l - std::round(l)) > 1e-9) REQUIRE(b == static_cast<int>(std::floor(l)));
+        REQUIRE(Leaf::edge_bin(4.0 * x) == b + 4);
+    }
+    CHECK(Leaf::edge_bin(0.0) <= Leaf::edge_bin(0x1p-1022));
+    CHECK(Leaf::edge_bin(INFINITY) >= Leaf::edge_bin(0x1p1023));
+}
+
+TEST_CASE("a flat leaf gives the shortest edges' bin first, first in first out within a bin",
+          "[refine][order]") {
+    Leaf leaf = Leaf::flat();
+    // Entry i has shortest edge² lengths[i]; circumradii do not matter.
+    const std::vector<double> lengths = {4.0, 1.0, 1.1, 0.25, 4.5, 1.2, 0.26, 1e-6, 1e6, 1.3};
+    for (std::uint32_t i = 0; i < lengths.size(); ++i)
+        leaf.push_poor(entry(i), leaf.slot(1e9 * (i + 1), lengths[i], true));
+    // Bins: 0.25, 0.26 -> -4; 1.0, 1.1, 1.2, 1.3 -> 0; 4.0, 4.5 -> 4.
+    CHECK(drain(leaf) == std::vector<std::uint32_t>{7, 3, 6, 1, 2, 5, 9, 0, 4, 8});
+    CHECK(leaf.idle());
+}
+
+TEST_CASE("a flat leaf takes the bins in order however the pushes interleave", "[refine][order]") {
+    Leaf leaf = Leaf::flat();
+    std::mt19937_64 random(21);
+    std::uniform_real_distribution<double> exponent(-40.0, 40.0);
+    std::vector<double> length;
+    std::uint32_t next = 0;
+    int last_bin = -100000;
+    std::map<int, std::uint32_t> last_taken;  // by bin
+    int taken = 0;
+    for (int step = 0; step < 20000; ++step) {
+        if (random() % 3 != 0 || leaf.poor_entries() == 0) {
+            length.push_back(std::exp2(exponent(random)));
+            leaf.push_poor(entry(next), leaf.slot(1.0, length[next], true));
+            ++next;
+            last_bin = -100000;  // a push may open a lower bin
+            continue;
+        }
+        QueuedTriangle q{};
+        REQUIRE(leaf.pop_poor(leaf.lowest_level(), q));
+        const int bin = Leaf::edge_bin(length[q.generation]);
+        // Between pushes the bins only go up; within a bin, always in
+        // arrival order.
+        REQUIRE(bin >= last_bin);
+        last_bin = bin;
+        auto [it, fresh] = last_taken.try_emplace(bin, q.generation);
+        if (!fresh) REQUIRE(q.generation > it->second);
+        it->second = q.generation;
+        ++taken;
+    }
+    CHECK(taken > 3000);
+    // What is left comes out in (bin, arrival) order.
+    std::vector<std::uint32_t> rest = drain(leaf);
+    for (std::size_t i = 1; i < rest.size(); ++i) {
+        const int a = Leaf::edge_bin(length[rest[i - 1]]), b = Leaf::edge_bin(length[rest[i]]);
+        REQUIRE(a <= b);
+        if (a == b) REQUIRE(rest[i - 1] < rest[i]);
+    }
+}
+
+TEST_CASE("size-only triangles come after every bin, newest first", "[refine][order]") {
+    Leaf leaf = Leaf::flat();
+    leaf.push_poor(entry(0), leaf.slot(1.0, 1.0, false));
+    leaf.push_poor(entry(1), leaf.slot(1.0, 1e3, true));
+    leaf.push_poor(entry(2), leaf.slot(1.0, 1e-3, false));
+    leaf.push_poor(entry(3), leaf.slot(1.0, 1e-3, true));
+    CHECK(drain(leaf) == std::vector<std::uint32_t>{3, 1, 2, 0});
+}
+
+TEST_CASE("a quadtree leaf orders by σ level, then by shortest edge", "[refine][order]") {
+    Leaf leaf(16.0);
+    // σ = floor(log2(16 / r)): r = 8 -> 1, r = 2 -> 3.
+    leaf.push_poor(entry(0), leaf.slot(4.0, 1.0, true));     // σ 3, l² 1
+    leaf.push_poor(entry(1), leaf.slot(64.0, 16.0, true));   // σ 1, l² 16
+    leaf.push_poor(entry(2), leaf.slot(64.0, 1.0, true));    // σ 1, l² 1
+    leaf.push_poor(entry(3), leaf.slot(4.0, 0.01, true));    // σ 3, l² 0.01
+    leaf.push_poor(entry(4), leaf.slot(64.0, 1.0, false));   // σ 1, size only
+    leaf.push_poor(entry(5), leaf.slot(64.0, 1.01, true));   // σ 1, l² 1 (same bin as 2)
+    leaf.push_poor(entry(6), leaf.slot(64.0, 1e-30, true));  // σ 1, below the last bin
+    CHECK(drain(leaf) == std::vector<std::uint32_t>{6, 2, 5, 1, 4, 3, 0});
+}
+
+TEST_CASE("a split keeps each bin's order in the children", "[refine][order]") {
+    Leaf parent(8.0);
+    parent.set_corner({0.0, 0.0});
+    Leaf c0(4.0), c1(4.0), c2(4.0), c3(4.0);
+    c0.set_corner({0.0, 0.0});
+    Leaf* const children[4] = {&c0, &c1, &c2, &c3};
+    // All in child 0's square: σ 2 in the parent (r = 1.5), 1 in the child.
+    for (std::uint32_t i = 0; i < 6; ++i) {
+        QueuedTriangle q = entry(i);
+        q.where = parent.where({1.0 + 0.1 * i, 1.0});
+        parent.push_poor(q, parent.slot(2.25, i % 2 ? 0.5 : 0.01, i < 4));
+    }
+    int used_up = 0;
+    parent.move_poor_to_children(children, [&](QueuedTriangle) { ++used_up; });
+    CHECK(used_up == 0);
+    CHECK(parent.poor_entries() == 0);
+    CHECK(c0.lowest_level() == 1);
+    // Bins: l² 0.01 (0, 2), l² 0.5 (1, 3), then the size bin as taking
+    // from the parent (5, 4) and pushing onto the child leaves it (4, 5).
+    CHECK(drain(c0) == std::vector<std::uint32_t>{0, 2, 1, 3, 4, 5});
+}
+
+}  // namespace gpdr::refine

@@ -161,7 +161,7 @@ TEST_CASE("refinement ends at 33 and 34 degrees on every sample and model, on 1 
           "[api][refine][order]") {
     std::vector<fs::path> files = poly_files(test::project_samples());
     for (const auto& f : poly_files(models())) files.push_back(f);
-    for (const auto& f : poly_files(test::shared_samples())) files.push_back(f);
+    for (const auto& f : poly_files(test::test_data())) files.push_back(f);
     for (const auto& file : files)
         for (const double angle : {33.0, 34.0})
             for (const unsigned threads : {1u, 2u}) check_terminates(file, angle, threads);

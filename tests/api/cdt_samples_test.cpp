@@ -10,6 +10,7 @@
 
 #include <gpdr/io.hpp>
 
+#include "api/api_test_support.hpp"
 #include "cli/cli_support.hpp"
 #include "mesh/checker.hpp"
 #include "triangulate/conformity.hpp"
@@ -19,15 +20,6 @@ using namespace gpdr;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::vector<fs::path> poly_files(const fs::path& folder) {
-    std::vector<fs::path> out;
-    if (folder.empty() || !fs::is_directory(folder)) return out;
-    for (const auto& e : fs::directory_iterator(folder))
-        if (e.path().extension() == ".poly") out.push_back(e.path());
-    std::sort(out.begin(), out.end());
-    return out;
-}
 
 void check_samples(const std::vector<fs::path>& files) {
     for (const fs::path& file : files) {
@@ -56,14 +48,14 @@ void check_samples(const std::vector<fs::path>& files) {
 }  // namespace
 
 TEST_CASE("the test data PSLGs triangulate into valid conforming CDTs", "[api][cdt][samples]") {
-    const auto files = poly_files(test::test_data());
+    const auto files = test::poly_files(test::test_data());
     REQUIRE(!files.empty());
     check_samples(files);
 }
 
 TEST_CASE("the project's sample PSLGs triangulate into valid conforming CDTs",
           "[api][cdt][samples]") {
-    const auto files = poly_files(fs::path(GPDR_SOURCE_DIR) / "poly-samples");
+    const auto files = test::poly_files(fs::path(GPDR_SOURCE_DIR) / "poly-samples");
     REQUIRE(!files.empty());
     check_samples(files);
 }

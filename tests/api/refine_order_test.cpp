@@ -22,6 +22,7 @@
 
 #include <gpdr/io.hpp>
 
+#include "api/api_test_support.hpp"
 #include "cli/cli_support.hpp"
 #include "mesh/checker.hpp"
 #include "mesh/traverse.hpp"
@@ -37,23 +38,6 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path models() { return test::source_dir() / "tests" / "data" / "models"; }
-
-double smallest_angle(const geometry::Point& a, const geometry::Point& b,
-                      const geometry::Point& c) {
-    const geometry::Point p[3] = {a, b, c};
-    double smallest = 180;
-    for (int k = 0; k < 3; ++k) {
-        const auto& o = p[k];
-        const auto& u = p[(k + 1) % 3];
-        const auto& v = p[(k + 2) % 3];
-        const double ux = u.x - o.x, uy = u.y - o.y, vx = v.x - o.x, vy = v.y - o.y;
-        const double cosine =
-            (ux * vx + uy * vy) / std::sqrt((ux * ux + uy * uy) * (vx * vx + vy * vy));
-        smallest =
-            std::min(smallest, std::acos(std::clamp(cosine, -1.0, 1.0)) * 180 / std::numbers::pi);
-    }
-    return smallest;
-}
 
 struct Refined {
     triangulate::Pslg pslg;
@@ -91,15 +75,6 @@ std::size_t triangle_count(const mesh::Mesh& m) {
     return n;
 }
 
-std::vector<fs::path> poly_files(const fs::path& folder) {
-    std::vector<fs::path> out;
-    if (folder.empty() || !fs::is_directory(folder)) return out;
-    for (const auto& e : fs::directory_iterator(folder))
-        if (e.path().extension() == ".poly") out.push_back(e.path());
-    std::sort(out.begin(), out.end());
-    return out;
-}
-
 // Models whose smallest input angle is large: nothing may be left there.
 bool no_tiny_input_angles(const fs::path& file) {
     const std::string n = file.stem().string();
@@ -125,7 +100,7 @@ void check_terminates(const fs::path& file, double angle, unsigned threads) {
         const auto& a = r.mesh.point(t.v[0]);
         const auto& b = r.mesh.point(t.v[1]);
         const auto& c = r.mesh.point(t.v[2]);
-        if (smallest_angle(a, b, c) >= angle - 1e-9) return;
+        if (test::smallest_angle(a, b, c) >= angle - 1e-9) return;
         bool protected_angle = false;
         quality.assess(r.mesh, id, refine::QualityTest::measure(a, b, c), &protected_angle);
         if (!protected_angle) ++poor;
@@ -142,11 +117,11 @@ struct Reference {
     std::size_t triangle;
 };
 const Reference references[] = {
-    {"channel", 30, -1, 488},      {"channel", 34, -1, 751},        {"pipe-section", 30, -1, 1204},
-    {"pipe-section", 34, -1, 1490}, {"coastline", 30, -1, 3172},     {"coastline", 34, -1, 5678},
-    {"star", 34, -1, 100},         {"@flow", 33, -1, 4850},         {"channel", 0, 0.4, 1591},
-    {"pipe-section", 0, 0.4, 1146}, {"coastline", 0, 4800, 1616},    {"star", 0, 0.4, 324},
-    {"@flow", 0, 0.3, 2018},       {"@pipe", 0, 160, 2416},
+    {"channel", 30, -1, 488},       {"channel", 34, -1, 751},     {"pipe-section", 30, -1, 1204},
+    {"pipe-section", 34, -1, 1490}, {"coastline", 30, -1, 3172},  {"coastline", 34, -1, 5678},
+    {"star", 34, -1, 100},          {"@flow", 33, -1, 4850},      {"channel", 0, 0.4, 1591},
+    {"pipe-section", 0, 0.4, 1146}, {"coastline", 0, 4800, 1616}, {"star", 0, 0.4, 324},
+    {"@flow", 0, 0.3, 2018},        {"@pipe", 0, 160, 2416},
 };
 
 fs::path reference_file(const Reference& ref) {
@@ -159,9 +134,9 @@ fs::path reference_file(const Reference& ref) {
 
 TEST_CASE("refinement ends at 33 and 34 degrees on every sample and model, on 1 and 2 threads",
           "[api][refine][order]") {
-    std::vector<fs::path> files = poly_files(test::project_samples());
-    for (const auto& f : poly_files(models())) files.push_back(f);
-    for (const auto& f : poly_files(test::test_data())) files.push_back(f);
+    std::vector<fs::path> files = test::poly_files(test::project_samples());
+    for (const auto& f : test::poly_files(models())) files.push_back(f);
+    for (const auto& f : test::poly_files(test::test_data())) files.push_back(f);
     for (const auto& file : files)
         for (const double angle : {33.0, 34.0})
             for (const unsigned threads : {1u, 2u}) check_terminates(file, angle, threads);
@@ -192,7 +167,7 @@ TEST_CASE("two threads' meshes stay near one thread's", "[api][refine][order]") 
 
 TEST_CASE("refining by size alone leaves a mesh that meets the bound as it is",
           "[api][refine][order]") {
-    for (const auto& file : poly_files(models())) {
+    for (const auto& file : test::poly_files(models())) {
         INFO(file.filename().string());
         // The bound: the largest triangle of the mesh -a gives, which that
         // mesh meets; refining it again must add nothing (no vertex
@@ -200,10 +175,10 @@ TEST_CASE("refining by size alone leaves a mesh that meets the bound as it is",
         Refined r = refine_file(file, 0, -1, 1);
         double largest = 0;
         mesh::for_each_triangle(r.mesh, [&](mesh::TriangleId, const mesh::Triangle& t) {
-            largest = std::max(largest, refine::QualityTest::measure(r.mesh.point(t.v[0]),
-                                                                     r.mesh.point(t.v[1]),
-                                                                     r.mesh.point(t.v[2]))
-                                            .area);
+            largest = std::max(
+                largest, refine::QualityTest::measure(r.mesh.point(t.v[0]), r.mesh.point(t.v[1]),
+                                                      r.mesh.point(t.v[2]))
+                             .area);
         });
         refine::RefineSettings settings = r.settings;
         settings.criteria.max_area = largest;

@@ -17,6 +17,7 @@
 
 #include <gpdr/io.hpp>
 
+#include "api/api_test_support.hpp"
 #include "cli/cli_support.hpp"
 #include "mesh/checker.hpp"
 #include "mesh/traverse.hpp"
@@ -29,25 +30,6 @@ using namespace gpdr;
 namespace fs = std::filesystem;
 
 namespace {
-
-// The smallest angle of triangle abc in degrees, computed independently of
-// the refiner (law of cosines).
-double smallest_angle(const geometry::Point& a, const geometry::Point& b,
-                      const geometry::Point& c) {
-    const geometry::Point p[3] = {a, b, c};
-    double smallest = 180;
-    for (int k = 0; k < 3; ++k) {
-        const auto& o = p[k];
-        const auto& u = p[(k + 1) % 3];
-        const auto& v = p[(k + 2) % 3];
-        const double ux = u.x - o.x, uy = u.y - o.y, vx = v.x - o.x, vy = v.y - o.y;
-        const double cosine =
-            (ux * vx + uy * vy) / std::sqrt((ux * ux + uy * uy) * (vx * vx + vy * vy));
-        smallest =
-            std::min(smallest, std::acos(std::clamp(cosine, -1.0, 1.0)) * 180 / std::numbers::pi);
-    }
-    return smallest;
-}
 
 void refine_and_check(const fs::path& file) {
     const auto read = io::read_poly(file.string(), ignore_warning);
@@ -99,7 +81,7 @@ void refine_and_check(const fs::path& file) {
                     const auto& c = m.point(t.v[2]);
                     const auto measures = refine::QualityTest::measure(a, b, c);
                     if (area > 0) REQUIRE(measures.area <= area);
-                    if (smallest_angle(a, b, c) >= angle - 1e-9) return;
+                    if (test::smallest_angle(a, b, c) >= angle - 1e-9) return;
                     bool protected_angle = false;
                     quality.assess(m, id, measures, &protected_angle);
                     REQUIRE(protected_angle);
@@ -111,22 +93,14 @@ void refine_and_check(const fs::path& file) {
     }
 }
 
-std::vector<fs::path> poly_files(const fs::path& folder) {
-    std::vector<fs::path> out;
-    for (const auto& e : fs::directory_iterator(folder))
-        if (e.path().extension() == ".poly") out.push_back(e.path());
-    std::sort(out.begin(), out.end());
-    return out;
-}
-
 }  // namespace
 
 TEST_CASE("refinement meets the bounds on the project's samples", "[api][refine][samples]") {
-    for (const auto& file : poly_files(test::project_samples())) refine_and_check(file);
+    for (const auto& file : test::poly_files(test::project_samples())) refine_and_check(file);
 }
 
 TEST_CASE("refinement meets the bounds on the test data samples", "[api][refine][samples]") {
-    const auto files = poly_files(test::test_data());
+    const auto files = test::poly_files(test::test_data());
     REQUIRE(!files.empty());
     for (const auto& file : files) refine_and_check(file);
 }

@@ -142,11 +142,11 @@ struct Reference {
     std::size_t triangle;
 };
 const Reference references[] = {
-    {"channel", 30, -1, 488},      {"channel", 34, -1, 751},        {"pipe-section", 30, -1, 1204},
-    {"pipe-section", 34, -1, 1490}, {"coastline", 30, -1, 3172},     {"coastline", 34, -1, 5678},
-    {"star", 34, -1, 100},         {"@flow", 33, -1, 4850},         {"channel", 0, 0.4, 1591},
-    {"pipe-section", 0, 0.4, 1146}, {"coastline", 0, 4800, 1616},    {"star", 0, 0.4, 324},
-    {"@flow", 0, 0.3, 2018},       {"@pipe", 0, 160, 2416},
+    {"channel", 30, -1, 488},       {"channel", 34, -1, 751},     {"pipe-section", 30, -1, 1204},
+    {"pipe-section", 34, -1, 1490}, {"coastline", 30, -1, 3172},  {"coastline", 34, -1, 5678},
+    {"star", 34, -1, 100},          {"@flow", 33, -1, 4850},      {"channel", 0, 0.4, 1591},
+    {"pipe-section", 0, 0.4, 1146}, {"coastline", 0, 4800, 1616}, {"star", 0, 0.4, 324},
+    {"@flow", 0, 0.3, 2018},        {"@pipe", 0, 160, 2416},
 };
 
 fs::path reference_file(const Reference& ref) {
@@ -200,10 +200,10 @@ TEST_CASE("refining by size alone leaves a mesh that meets the bound as it is",
         Refined r = refine_file(file, 0, -1, 1);
         double largest = 0;
         mesh::for_each_triangle(r.mesh, [&](mesh::TriangleId, const mesh::Triangle& t) {
-            largest = std::max(largest, refine::QualityTest::measure(r.mesh.point(t.v[0]),
-                                                                     r.mesh.point(t.v[1]),
-                                                                     r.mesh.point(t.v[2]))
-                                            .area);
+            largest = std::max(
+                largest, refine::QualityTest::measure(r.mesh.point(t.v[0]), r.mesh.point(t.v[1]),
+                                                      r.mesh.point(t.v[2]))
+                             .area);
         });
         refine::RefineSettings settings = r.settings;
         settings.criteria.max_area = largest;

@@ -25,11 +25,13 @@
 // A flat leaf (the sequential refiner, Leaf::flat) has no σ levels: its
 // level is the top bits of the bin number, so the order is exactly the one
 // above over the whole mesh.  A quadtree leaf of side ℓ (the parallel
-// layer) first sorts by σ = ⌊log2(ℓ / r)⌋ (r the circumradius), the
-// largest triangles first (Miller's order, which keeps each run's cavities
-// inside its buffer zone), and within a σ level by the bin of l², counted
-// from the longest edge the level can hold (l² < 4 r² <= 4 ℓ² 4^-σ):
-// bin_count bins, the last of which also takes every shorter edge.
+// layer) files each triangle under its σ = ⌊log2(ℓ / r)⌋ (r the
+// circumradius), which decides which triangles one run of the leaf takes
+// (a window of levels) and when the leaf splits; within a σ level by the
+// bin of l², counted from the longest edge the level can hold
+// (l² < 4 r² <= 4 ℓ² 4^-σ): bin_count bins, the first of which also takes
+// every shorter edge.  A run takes its window in the order above across
+// levels (first_slot), so that the order is Triangle's within the window.
 // Levels are allocated on first use, and the table of them grows only as
 // far as the deepest level used (a quadtree leaf sees a handful of levels;
 // -g1 makes hundreds of thousands of leaves).

@@ -373,18 +373,18 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q, PoorSlot at) {
     // lies outside), t goes with it instead of back into this leaf, which
     // would take it again at once (parallel layer; never without a hook).
     // When none could be split (too short for double precision, or a
-    // degenerate neighbourhood), nothing changed and nothing will: t is
-    // given up rather than queued again.
+    // degenerate neighbourhood) and no limit stopped refinement, nothing
+    // changed and nothing will: t is given up rather than queued again.
     auto split_queued_subsegments_then_requeue = [&] {
         const std::size_t handed = leaf.handed_off_subsegments.size();
         const std::uint64_t splits = split_queued_subsegments(leaf);
         if (!alive()) return;
         if (leaf.handed_off_subsegments.size() != handed)
             leaf.handed_off_triangles.push_back(q);
-        else if (splits == 0)
+        else if (splits == 0 && report_.stopped == RefineReport::Stop::none)
             give_up(q, reason_precision);
         else
-            leaf.push_poor(q, at);
+            leaf.push_poor(q, at);  // (a limit stopped it: counted as left by the budget)
     };
     auto split_instead = [&](EdgeRef e) {
         leaf.push_subsegment({e, mesh_.triangle(e.triangle()).generation, true});

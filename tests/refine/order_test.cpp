@@ -146,4 +146,31 @@ TEST_CASE("a split keeps each bin's order in the children", "[refine][order]") {
     CHECK(drain(c0) == std::vector<std::uint32_t>{0, 2, 1, 3, 4, 5});
 }
 
+TEST_CASE("a quadtree leaf's window is taken by shortest edge across its levels",
+          "[refine][order]") {
+    Leaf leaf(16.0);
+    leaf.push_poor(entry(0), leaf.slot(64.0, 16.0, true));   // σ 1, l² 16
+    leaf.push_poor(entry(1), leaf.slot(4.0, 1.0, true));     // σ 3, l² 1
+    leaf.push_poor(entry(2), leaf.slot(64.0, 1.0, true));    // σ 1, l² 1
+    leaf.push_poor(entry(3), leaf.slot(0.01, 0.001, true));  // σ 7, l² 0.001
+    leaf.push_poor(entry(4), leaf.slot(4.0, 2.0, false));    // σ 3, size only
+    leaf.push_poor(entry(5), leaf.slot(64.0, 2.0, false));   // σ 1, size only
+    std::vector<std::uint32_t> taken;
+    PoorSlot at;
+    while (leaf.first_slot(4, at)) {  // the window: σ 1 .. 4
+        QueuedTriangle q{};
+        REQUIRE(leaf.pop_poor(at.level, q));
+        taken.push_back(q.generation);
+    }
+    // Edge bins first, by edge_bin(l²) whatever the level (2 and 1 share
+    // it: the lower level first), then the size bins lowest level first;
+    // σ 7 lies beyond the window.
+    CHECK(taken == std::vector<std::uint32_t>{2, 1, 0, 5, 4});
+    CHECK(leaf.lowest_level() == 7);
+    Leaf flat = Leaf::flat();
+    flat.push_poor(entry(0), flat.slot(1.0, 4.0, true));
+    CHECK_FALSE(flat.first_slot(-1, at));
+    CHECK(flat.first_slot(Leaf::bucket_count, at));
+}
+
 }  // namespace gpdr::refine

@@ -52,7 +52,7 @@ std::string help_text() {
            "            remove the triangles outside the segments and in holes.\n"
            "  -r        Refine the mesh in input.node and input.ele (a previous output).\n"
            "  -q[ANGLE] Quality mesh: no angle below ANGLE degrees (default 20; at most\n"
-           "            about 33 is practical, and below 60 is required).  Also keeps the\n"
+           "            about 34 is practical, and below 60 is required).  Also keeps the\n"
            "            largest angle below 180 - 2 ANGLE.\n"
            "  -a[AREA]  With a number: no triangle larger than AREA (above zero; 1e-5 style\n"
            "            exponents allowed).  Bare: area bounds per region from the .poly,\n"

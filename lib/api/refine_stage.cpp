@@ -58,7 +58,7 @@ void warn_before_refinement(const Options& o, const WarningSink& warn) {
         warn(Warning{
             "", 0,
             fmt::format("a minimum angle of {} degrees may be out of reach (Triangle's refinement "
-                        "usually works up to about 33); gpdr stops with a valid mesh if it is",
+                        "usually works up to about 34); gpdr stops with a valid mesh if it is",
                         o.min_angle)});
 }
 

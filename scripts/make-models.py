@@ -21,43 +21,14 @@ import math
 import os
 import random
 
+from pslg import circle, fractal_star, write_poly as write_poly_at
+
 OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "data", "models")
 
 
-def circle(cx, cy, r, n, phase=0.0):
-    return [(cx + r * math.cos(phase + 2 * math.pi * k / n),
-             cy + r * math.sin(phase + 2 * math.pi * k / n)) for k in range(n)]
-
-
 def write_poly(name, comment, loops, holes, markers, extra_segments=()):
-    """loops: closed polylines (lists of points), one marker each;
-    extra_segments: open polylines (lists of points), marker 3."""
-    vertices, segments = [], []
-    for loop, marker in zip(loops, markers):
-        first = len(vertices)
-        for p in loop:
-            vertices.append((p, marker))
-        for k in range(len(loop)):
-            segments.append((first + k, first + (k + 1) % len(loop), marker))
-    for line in extra_segments:
-        first = len(vertices)
-        for p in line:
-            vertices.append((p, 3))
-        for k in range(len(line) - 1):
-            segments.append((first + k, first + k + 1, 3))
     os.makedirs(OUT, exist_ok=True)
-    with open(os.path.join(OUT, name), "w") as f:
-        for line in comment:
-            f.write(f"# {line}\n")
-        f.write(f"{len(vertices)} 2 0 1\n")
-        for i, ((x, y), m) in enumerate(vertices, 1):
-            f.write(f"{i} {x!r} {y!r} {m}\n")
-        f.write(f"{len(segments)} 1\n")
-        for i, (a, b, m) in enumerate(segments, 1):
-            f.write(f"{i} {a + 1} {b + 1} {m}\n")
-        f.write(f"{len(holes)}\n")
-        for i, (x, y) in enumerate(holes, 1):
-            f.write(f"{i} {x!r} {y!r}\n")
+    write_poly_at(os.path.join(OUT, name), comment, loops, holes, markers, extra_segments)
 
 
 def channel():
@@ -87,23 +58,6 @@ def pipe_section():
         holes.append((cx, cy))
     write_poly("pipe-section.poly", ["A pipe section with six holes: scripts/make-models.py"], loops,
                holes, [1] + [2] * 6)
-
-
-def fractal_star(cx, cy, radius, n, rng):
-    """make-coastline.py's star-shaped fractal polygon."""
-    terms = []
-    amplitude = 0.15
-    frequency = 3
-    while frequency < n / 2 and amplitude > 1e-4:
-        terms.append((amplitude, frequency, rng.uniform(0, 2 * math.pi)))
-        amplitude /= 2
-        frequency *= 2
-    points = []
-    for k in range(n):
-        phi = 2 * math.pi * k / n
-        r = radius * (1 + sum(a * math.sin(f * phi + p) for a, f, p in terms))
-        points.append((cx + r * math.cos(phi), cy + r * math.sin(phi)))
-    return points
 
 
 def coastline():

@@ -52,38 +52,16 @@ import math
 import os
 import random
 
+from pslg import circle, write_poly as write_poly_at
+
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 OUT = os.path.join(ROOT, "poly-samples")
 TEST_DATA = os.path.join(ROOT, "tests", "data")
 MADE_BY = "Made by scripts/make-samples.py."
 
 
-def circle(cx, cy, r, n):
-    return [(cx + r * math.cos(2 * math.pi * k / n), cy + r * math.sin(2 * math.pi * k / n))
-            for k in range(n)]
-
-
 def write_poly(name, comment, loops, holes, markers):
-    """loops: closed polylines (lists of points); markers: one per loop."""
-    vertices, segments = [], []
-    for loop, marker in zip(loops, markers):
-        first = len(vertices)
-        for p in loop:
-            vertices.append((p, marker))
-        for k in range(len(loop)):
-            segments.append((first + k, first + (k + 1) % len(loop), marker))
-    with open(os.path.join(OUT, name), "w") as f:
-        for line in comment:
-            f.write(f"# {line}\n")
-        f.write(f"{len(vertices)} 2 0 1\n")
-        for i, ((x, y), m) in enumerate(vertices, 1):
-            f.write(f"{i} {x!r} {y!r} {m}\n")
-        f.write(f"{len(segments)} 1\n")
-        for i, (a, b, m) in enumerate(segments, 1):
-            f.write(f"{i} {a + 1} {b + 1} {m}\n")
-        f.write(f"{len(holes)}\n")
-        for i, (x, y) in enumerate(holes, 1):
-            f.write(f"{i} {x!r} {y!r}\n")
+    write_poly_at(os.path.join(OUT, name), comment, loops, holes, markers)
 
 
 def pipe():

@@ -103,10 +103,11 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
         // Each record costs 40 bytes per new vertex: keep them only when
         // there are vertex attributes to interpolate.
         settings.record_new_vertices = input.nodes.data.attribute_count > 0;
+        // -S counts every vertex gpdr adds, as Triangle's does: those -D
+        // added, and those where segments cross.
+        const std::uint64_t added = tri.steiner_points + tri.cdt_report.new_vertices.size();
         if (settings.steiner_limit)
-            settings.max_steiner = settings.max_steiner > tri.steiner_points
-                                       ? settings.max_steiner - tri.steiner_points
-                                       : 0;
+            settings.max_steiner = settings.max_steiner > added ? settings.max_steiner - added : 0;
         api::warn_before_refinement(options, warn);
         parallel_lines = api::refine(tri.mesh, settings, options, refined);
         api::warn_after_refinement(refined, warn);

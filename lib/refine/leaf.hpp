@@ -230,20 +230,24 @@ public:
                 b.head = 0;
             }
         }
+        if (l->lowest_bin != size_bin) --edge_entries_;
         if (--l->entries == 0) l->lowest_bin = bin_count + 1;
         --poor_entries_;
         return true;
     }
     std::size_t poor_entries() const { return poor_entries_; }
 
-    // The slot to take first among levels lowest_level() .. last_level: a
-    // flat leaf's lowest; a quadtree leaf's by shortest edge over the levels
-    // (edge bins compared across levels; size bins after every other bin,
-    // lowest level first).  False when the levels hold nothing.
-    bool first_slot(int last_level, PoorSlot& at) {
+    // The slot to take first among levels lowest_level() .. last_level, the
+    // size bins only up to last_size_level: a flat leaf's lowest; a quadtree
+    // leaf's by shortest edge over the levels (edge bins compared across
+    // levels; size bins after every edge bin, lowest level first).  False
+    // when those levels hold nothing.
+    bool first_slot(int last_level, PoorSlot& at, int last_size_level = bucket_count) {
         const int lowest = lowest_level();
         if (lowest < 0 || lowest > last_level) return false;
-        if (flat_) {
+        const int last_size = std::min(last_level, last_size_level);
+        if (flat_ || (edge_entries_ == 0 && lowest <= last_size)) {
+            // (Without edge entries, the lowest level's size bin.)
             Level* l = levels_[static_cast<std::size_t>(lowest)].get();
             while (l->bins[l->lowest_bin].empty()) ++l->lowest_bin;
             at = {lowest, l->lowest_bin};
@@ -260,6 +264,7 @@ public:
             // bin_count - 1 below its top (Leaf::slot); size bins after
             // every edge bin, lowest level first.
             const int b = l->lowest_bin;
+            if (b == size_bin && j > last_size) continue;
             const long k = b == size_bin ? (1L << 20) + j : top_bin_ - 4L * j - (bin_count - 1 - b);
             if (!found || k < best) {
                 best = k;
@@ -288,6 +293,7 @@ public:
         levels.swap(levels_);
         lowest_ = bucket_count;
         poor_entries_ = 0;
+        edge_entries_ = 0;
         for (std::size_t j = 0; j < levels.size(); ++j) {
             Level* l = levels[j].get();
             if (!l || l->entries == 0) continue;
@@ -338,6 +344,7 @@ public:
         std::vector<std::unique_ptr<Level>>().swap(levels_);
         lowest_ = bucket_count;
         poor_entries_ = 0;
+        edge_entries_ = 0;
         std::vector<QueuedSubsegment>().swap(subsegments_);
         std::vector<QueuedTriangle>().swap(handed_off_triangles);
         std::vector<QueuedSubsegment>().swap(handed_off_subsegments);
@@ -381,11 +388,15 @@ private:
         l.entries += n;
         if (at.bin < l.lowest_bin) l.lowest_bin = at.bin;
         if (at.level < lowest_) lowest_ = at.level;
+        if (at.bin != size_bin) edge_entries_ += n;
         poor_entries_ += n;
     }
     std::vector<std::unique_ptr<Level>> levels_;  // by σ level, up to the deepest used
     int lowest_ = bucket_count;
     std::size_t poor_entries_ = 0;
+    // Of them, in edge bins: while none, the window's first slot is the
+    // lowest level's size bin, found without looking at the other levels.
+    std::size_t edge_entries_ = 0;
     std::vector<QueuedSubsegment> subsegments_;
     OwnedBox box_{};
     bool has_box_ = false;

@@ -197,9 +197,10 @@ public:
     // Fig. 4 of the paper on `leaf`: step 0, then levels i_min .. i_min + g.
     // Returns false when a limit stopped refinement (report().stopped).
     bool refine_leaf(Leaf& leaf);
-    // The same for levels i_min .. last_level (none when last_level < i_min,
-    // but step 0 always runs).
-    bool refine_levels(Leaf& leaf, int last_level);
+    // The same for levels i_min .. last_level, size bins only up to
+    // last_size_level (none when last_level < i_min, but step 0 always
+    // runs).
+    bool refine_levels(Leaf& leaf, int last_level, int last_size_level = Leaf::bucket_count);
     // Splits queued subsegments until none is left (step 0); returns how
     // many it split.
     std::uint64_t split_queued_subsegments(Leaf& leaf);

@@ -3,6 +3,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <random>
 #include <string>
 
@@ -268,4 +269,21 @@ TEST_CASE("switch -jN refines in parallel: the same bounds and about the same co
     const double ratio = double(m.triangles.size()) / double(sequential);
     CHECK(ratio > 0.95);
     CHECK(ratio < 1.05);
+}
+
+TEST_CASE("switch -S counts the vertices where segments cross", "[cli][limits]") {
+    TempDir dir;
+    // A square whose diagonals cross once: one vertex at (0.5, 0.5).
+    dir.write("x.poly",
+              "4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n"
+              "6 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 1 3\n6 2 4\n0\n");
+    for (const int budget : {0, 1, 3, 6}) {
+        INFO("-S" << budget);
+        const RunResult r = run_gpdr(dir, "-Qpa0.001S" + std::to_string(budget) + " x.poly");
+        REQUIRE(r.status == 0);
+        const MeshFiles m = MeshFiles::read(dir, "x.1");
+        // The crossing is always made (the segments need it); refinement
+        // gets what is left of the budget.
+        CHECK(m.nodes.size() == 5 + static_cast<std::size_t>(std::max(budget - 1, 0)));
+    }
 }

@@ -29,8 +29,10 @@ struct JobResult {
     bool checked = false;
     std::vector<std::string> check_problems;
 
-    // -V: human-readable statistics lines prepared by the library (no printing
-    // happens in the library; apps/gpdr prints these).
+    // Human-readable statistics lines prepared by the library (no printing
+    // happens in the library): timings and counts always; with -V also the
+    // threads' times and the quality statistics.  apps/gpdr prints them for
+    // -V, libtriangle unless Q.
     std::vector<std::string> statistics;
 };
 

@@ -4,6 +4,7 @@
 // once it has turned argv into Options.
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -41,9 +42,15 @@ struct JobResult {
 // from several threads at once, so it must be thread-safe.
 using Triunsuitable = int (*)(double* org, double* dest, double* apex, double area);
 
+// The same test as a function object, which may carry data of its own (a
+// library caller's callback and its user data).
+using UnsuitableTest = std::function<int(double* org, double* dest, double* apex, double area)>;
+
 // Code the application plugs into the job (linked in, or loaded with dlopen).
+// -u needs one of the two; `unsuitable` wins when both are set.
 struct JobPlugins {
-    Triunsuitable triunsuitable = nullptr;  // required by -u
+    Triunsuitable triunsuitable = nullptr;
+    UnsuitableTest unsuitable;
 };
 
 // Runs the whole job.  Throws gpdr::Error subclasses on bad input or output;

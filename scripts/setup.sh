@@ -9,7 +9,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(cmake make gcc g++ libcli11-dev libfmt-dev catch2 libgmp-dev)
+# pkg-config and locales (localedef's sources): the library's tests.
+packages=(cmake make gcc g++ libcli11-dev libfmt-dev catch2 libgmp-dev pkg-config locales)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -2,13 +2,13 @@
 # Builds gpdr's parallel tests and the gpdr program with ThreadSanitizer
 # (build-tsan) and runs them: the parallel tests, then gpdr -j4 refining a
 # sample, taking its -V statistics and writing every output file side by
-# side.  Any race report fails the run.  GCC 12 gives false warnings in
+# side, then eight threads calling libtriangle's triangulate() at once.  Any race report fails the run.  GCC 12 gives false warnings in
 # Catch2's headers under sanitizers, so -Werror is off here.
 set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
 build="$root/build-tsan"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGPDR_TSAN=ON -DGPDR_WERROR=OFF >/dev/null
-cmake --build "$build" --target test_parallel gpdr_app -j"${JOBS:-2}"
+cmake --build "$build" --target test_parallel gpdr_app capi_threads_test -j"${JOBS:-2}"
 export TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 ${TSAN_OPTIONS:-}"
 # Some kernels place memory where TSan cannot map it: run without ASLR where
 # setarch can turn it off.
@@ -27,3 +27,5 @@ cp "$root/poly-samples/flow.poly" "$scratch/"
 # threads too (runs of 16384 triangles).
 run "$build/gpdr" -Vpq30a0.02cenvj4 "$scratch/flow.poly" >/dev/null
 echo "gpdr -j4 under ThreadSanitizer: no race reported"
+run "$build/tests/capi_threads_test" >/dev/null
+echo "libtriangle from 8 threads under ThreadSanitizer: no race reported"

@@ -9,6 +9,7 @@
 #include <gpdr/errors.hpp>
 #include <gpdr/file_names.hpp>
 #include <gpdr/job.hpp>
+#include <gpdr/memory_job.hpp>
 
 #include "api/job_stages.hpp"
 #include "mesh/checker.hpp"
@@ -72,29 +73,30 @@ std::vector<std::string> summary_lines(const JobResult& r, const Options& option
     return lines;
 }
 
-}  // namespace
-
-JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugins& plugins) {
-    Options options = given;
-    apply_input_name(options);
-    const FileNames names = file_names(options);
-    JobResult result;
-    Stopwatch clock;
-
-    // Read (every input is checked before anything else happens).
-    api::Input input = api::read_input(options, names, warn);
-    result.input_vertices = input.nodes.data.size();
-    result.read_seconds = clock.lap();
-
-    // Triangulate.
-    api::Triangulated tri = api::triangulate_input(options, input, warn);  // takes the coordinates
-    result.triangulate_seconds = clock.lap();
-
-    // Refine.
-    const bool refining = api::wants_refinement(options);
+// The stages every run shares: from the input, read and checked, to the
+// finished mesh as arrays and its -V quality statistics.
+struct Meshed {
+    api::Triangulated tri;
+    api::MeshArrays arrays;
+    bool refining = false;
     refine::RefineReport refined;
     std::vector<std::string> parallel_lines;
-    if (refining) {
+    std::vector<std::string> quality;
+};
+
+// Triangulates, refines, checks (-C) and turns the mesh into arrays,
+// filling in `result`'s counts and the triangulate and refine times.  The
+// triangles are always materialised with `materialise`, else only when an
+// output derives from them.  Takes the vertices out of `input`.
+Meshed make_mesh(const Options& options, api::Input& input, const WarningSink& warn,
+                 const JobPlugins& plugins, bool materialise, JobResult& result, Stopwatch& clock) {
+    Meshed m;
+    api::Triangulated& tri = m.tri;
+    tri = api::triangulate_input(options, input, warn);  // takes the coordinates
+    result.triangulate_seconds = clock.lap();
+
+    m.refining = api::wants_refinement(options);
+    if (m.refining) {
         refine::RefineSettings settings =
             api::refine_settings(options, plugins, input.poly ? &*input.poly : nullptr);
         settings.criteria.triangle_max_area = tri.area_bounds.get();
@@ -109,11 +111,11 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
         if (settings.steiner_limit)
             settings.max_steiner = settings.max_steiner > added ? settings.max_steiner - added : 0;
         api::warn_before_refinement(options, warn);
-        parallel_lines = api::refine(tri.mesh, settings, options, refined);
-        api::warn_after_refinement(refined, warn);
-        tri.new_vertices.insert(tri.new_vertices.end(), refined.new_vertices.begin(),
-                                refined.new_vertices.end());
-        refined.new_vertices = {};
+        m.parallel_lines = api::refine(tri.mesh, settings, options, m.refined);
+        api::warn_after_refinement(m.refined, warn);
+        tri.new_vertices.insert(tri.new_vertices.end(), m.refined.new_vertices.begin(),
+                                m.refined.new_vertices.end());
+        m.refined.new_vertices = {};
     }
     result.refine_seconds = clock.lap();
 
@@ -126,48 +128,95 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
         }
     }
 
-    // Write.
     // Neighbours cost 12 bytes per triangle: only the outputs that are
     // derived from them get them.
     const bool neighbours = options.write_neighbours || options.write_edges ||
                             options.write_voronoi || options.write_off || options.order == 2;
     // The triangle array itself only for what is derived from it.
-    const bool materialise = neighbours || options.jettison;
-    api::MeshArrays arrays = api::mesh_to_arrays(
-        tri.mesh, std::move(input.nodes.data), result.input_vertices, tri.new_vertices,
-        tri.triangle_attribute_count, tri.region_attributes, neighbours, materialise);
+    materialise = materialise || neighbours || options.jettison;
+    m.arrays = api::mesh_to_arrays(tri.mesh, std::move(input.nodes.data), result.input_vertices,
+                                   tri.new_vertices, tri.triangle_attribute_count,
+                                   tri.region_attributes, neighbours, materialise);
     tri.new_vertices = {};
-    result.vertices = arrays.nodes.size() - tri.duplicates;
-    result.triangles = arrays.triangle_count;
+    result.vertices = m.arrays.nodes.size() - tri.duplicates;
+    result.triangles = m.arrays.triangle_count;
     result.hull_edges = mesh::count_hull_edges(tri.mesh);
     result.edges =
         (3 * result.triangles + result.hull_edges) / 2;  // each edge has two sides but the hull's
     result.segments = tri.mesh.subsegments().size();
-    std::vector<std::string> quality;
     if (options.verbosity > 0) {
         // Before -o2 changes the triangles; not counted as output time (as
         // in Triangle, whose "Output milliseconds" are the writing alone).
         const double before = clock.lap();
-        quality = api::quality_statistics(arrays, parallel::thread_count(options.threads));
+        m.quality = api::quality_statistics(m.arrays, parallel::thread_count(options.threads));
         clock.lap();
         result.write_seconds += before;
     }
+    return m;
+}
+
+// The -V lines, once every stage has been timed.
+void add_statistics(JobResult& result, const Options& options, const Meshed& m) {
+    result.statistics = summary_lines(result, options, m.refining, m.refined, m.tri.steiner_points);
+    // The threads' times are -V's detail (libtriangle prints the rest
+    // without it).
+    if (options.verbosity > 0)
+        result.statistics.insert(result.statistics.end(), m.parallel_lines.begin(),
+                                 m.parallel_lines.end());
+    if (!m.quality.empty()) {
+        result.statistics.emplace_back();
+        result.statistics.insert(result.statistics.end(), m.quality.begin(), m.quality.end());
+    }
+}
+
+}  // namespace
+
+JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugins& plugins) {
+    Options options = given;
+    apply_input_name(options);
+    const FileNames names = file_names(options);
+    JobResult result;
+    Stopwatch clock;
+
+    // Read (every input is checked before anything else happens).
+    api::Input input = api::read_input(options, names, warn);
+    result.input_vertices = input.nodes.data.size();
+    result.read_seconds = clock.lap();
+
+    Meshed m = make_mesh(options, input, warn, plugins, false, result, clock);
+
     api::OutputRequest request;
     request.options = &options;
     request.names = &names;
     request.base = input.nodes.base;
     request.poly = input.poly ? &*input.poly : nullptr;
     request.write_hull_poly = options.convex_hull;
-    result.files_written = api::write_outputs(request, tri.mesh, arrays);
+    result.files_written = api::write_outputs(request, m.tri.mesh, m.arrays);
     result.write_seconds += clock.lap();
 
-    result.statistics = summary_lines(result, options, refining, refined, tri.steiner_points);
-    result.statistics.insert(result.statistics.end(), parallel_lines.begin(), parallel_lines.end());
-    if (!quality.empty()) {
-        result.statistics.emplace_back();
-        result.statistics.insert(result.statistics.end(), quality.begin(), quality.end());
-    }
+    add_statistics(result, options, m);
     return result;
+}
+
+MemoryJobResult run_job_in_memory(const Options& given_options, MeshInput given,
+                                  const WarningSink& warn, const JobPlugins& plugins) {
+    Options options = given_options;
+    options.write_off = false;  // -g makes only a file
+    if (options.help) throw UsageError("-h: there is no help text to print in library mode");
+    MemoryJobResult out;
+    JobResult& result = out.report;
+    Stopwatch clock;
+
+    api::Input input = api::input_from_memory(options, std::move(given));
+    result.input_vertices = input.nodes.data.size();
+    result.read_seconds = clock.lap();
+
+    Meshed m = make_mesh(options, input, warn, plugins, true, result, clock);
+    out.mesh = api::output_in_memory(options, m.tri.mesh, m.arrays);
+    result.write_seconds += clock.lap();
+
+    add_statistics(result, options, m);
+    return out;
 }
 
 }  // namespace gpdr

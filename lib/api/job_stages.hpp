@@ -14,6 +14,7 @@
 
 #include <gpdr/diagnostics.hpp>
 #include <gpdr/job.hpp>
+#include <gpdr/memory_job.hpp>
 
 #include <gpdr/io.hpp>
 
@@ -37,6 +38,11 @@ struct Input {
     std::optional<AreaSet> areas;     // -r with bare -a
 };
 Input read_input(const Options& options, const FileNames& names, const WarningSink& warn);
+
+// The same from arrays in memory (run_job_in_memory): the parts the switches
+// use, checked as the readers check a file (indices in range, counts that
+// agree, finite coordinates), with `input.name` for the file in messages.
+Input input_from_memory(const Options& options, MeshInput input);
 
 // The mesh before refinement, and what later stages need to know about how
 // it was made.
@@ -93,6 +99,26 @@ MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t inp
 // The marker of mesh edge {a, b} (Triangle's rules): a subsegment's own
 // marker if non-zero, else 1 on the boundary, else 0.
 EdgeMarker edge_markers(const mesh::Mesh& mesh);
+
+// What the outputs derive from the arrays.  -j drops the unused vertices
+// first; the edges (-e), the Voronoi diagram (-v) and the edge count (-g) are
+// taken before -o2 makes the triangles six-node, which it does last.
+struct PreparedOutputs {
+    std::vector<std::uint32_t> number;  // mesh vertex id -> node index (none: not output)
+    EdgeMarker mesh_marker;             // edge markers by mesh vertex ids
+    EdgeSet edges;
+    VoronoiDiagram voronoi;
+    std::uint64_t edge_count = 0;
+};
+PreparedOutputs prepare_outputs(const Options& options, const mesh::Mesh& mesh, MeshArrays& arrays);
+
+// The subsegments of the mesh as .poly segments, in the arrays' numbering.
+SegmentSet subsegments_of(const mesh::Mesh& mesh, const PreparedOutputs& prepared);
+
+// The outputs the switches ask for, in memory: what write_outputs() would
+// write, without the files.  -j and -o2 change `arrays`, and its vectors are
+// moved into the result.
+MeshOutput output_in_memory(const Options& options, const mesh::Mesh& mesh, MeshArrays& arrays);
 
 // Everything about the output a run needs besides the mesh.
 struct OutputRequest {

@@ -37,13 +37,16 @@ refine::RefineSettings refine_settings(const Options& o, const JobPlugins& plugi
             s.criteria.region_max_area[i + 1] = poly->regions[i].max_area;
     }
     if (o.user_test) {
-        if (!plugins.triunsuitable)
+        if (!plugins.triunsuitable && !plugins.unsuitable)
             throw UsageError(
                 "-u needs a triunsuitable() function: load one with --unsuitable PATH.so "
                 "(built with 'cc -shared -fPIC -O2 -o PATH.so yours.c'), or link it into gpdr "
                 "(cmake "
                 "-DGPDR_TRIUNSUITABLE=yours.c; see README, \"Grading with triunsuitable()\")");
-        s.criteria.user_test = plugins.triunsuitable;
+        if (plugins.unsuitable)
+            s.criteria.user_test = plugins.unsuitable;
+        else
+            s.criteria.user_test = plugins.triunsuitable;
     }
     s.placement = o.placement;
     s.no_segment_splitting = o.no_segment_splitting;

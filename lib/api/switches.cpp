@@ -49,8 +49,9 @@ constexpr std::array<std::string_view, 6> long_options = {"threads",    "granula
 // the user typed it, for messages.
 class ClusterReader {
 public:
-    ClusterReader(std::string_view text, std::string_view shown, Options& options)
-        : text_(text), shown_(shown), options_(options) {}
+    ClusterReader(std::string_view text, std::string_view shown, Options& options,
+                  SwitchDialect dialect)
+        : text_(text), shown_(shown), options_(options), dialect_(dialect) {}
 
     void run() {
         while (pos_ < text_.size()) {
@@ -171,13 +172,29 @@ private:
             case 'h':
             case 'H':
             case '?':
+                if (library()) break;  // Triangle's library has no help to print
                 options_.help = true;
                 return false;
-            default:
+            case 'w':
+            case 'W':
+                if (library())
+                    fail(fmt::format("-{}", letter), ": ",
+                         "Triangle's weighted Delaunay triangulations are not supported");
                 unknown(letter);
+            case 'L':
+                // Triangle's parser takes L for D; its library users may rely on it.
+                if (!library()) unknown(letter);
+                options_.conforming_delaunay = true;
+                break;
+            default:
+                // Triangle's library skips what it does not know (the braces of
+                // "Qz{a0.2}", a leading '-'); the program reports it.
+                if (!library()) unknown(letter);
         }
         return true;
     }
+
+    bool library() const { return dialect_ == SwitchDialect::library; }
 
     bool digit_follows() const { return pos_ < text_.size() && is_digit(text_[pos_]); }
     bool char_is(std::size_t at, bool (*test)(char)) const {
@@ -334,6 +351,7 @@ private:
     std::string_view text_;
     std::string_view shown_;
     Options& options_;
+    SwitchDialect dialect_;
     std::size_t pos_ = 0;           // the next character to read
     std::size_t letter_start_ = 0;  // where the switch being read starts
 };
@@ -346,13 +364,16 @@ std::string lower(std::string_view s) {
 
 }  // namespace
 
-void parse_switches(std::string_view cluster, Options& options) {
+void parse_switches(std::string_view cluster, Options& options, SwitchDialect dialect) {
     if (cluster.empty()) return;
-    if (cluster == "-")
-        throw UsageError("'-' alone is not a switch (gpdr reads named files, not standard input)");
     std::string_view text = cluster;
-    if (text.front() == '-') text.remove_prefix(1);
-    ClusterReader(text, cluster, options).run();
+    if (dialect == SwitchDialect::program) {
+        if (cluster == "-")
+            throw UsageError(
+                "'-' alone is not a switch (gpdr reads named files, not standard input)");
+        if (text.front() == '-') text.remove_prefix(1);
+    }
+    ClusterReader(text, cluster, options, dialect).run();
 }
 
 Placement parse_placement(std::string_view name) {

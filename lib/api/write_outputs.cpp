@@ -22,20 +22,6 @@
 namespace gpdr::api {
 namespace {
 
-// The subsegments of the mesh as .poly segments, in the arrays' numbering
-// (`number`: mesh vertex id -> node index).
-SegmentSet subsegments_of(const mesh::Mesh& mesh, const std::vector<std::uint32_t>& number,
-                          const EdgeMarker& marker) {
-    SegmentSet segments;
-    mesh::for_each_edge(mesh, [&](const mesh::EdgeView& e) {
-        if (!e.subsegment) return;
-        segments.endpoints.push_back(number[index(e.from)]);
-        segments.endpoints.push_back(number[index(e.to)]);
-        segments.markers.push_back(marker(index(e.from), index(e.to), e.hull));
-    });
-    return segments;
-}
-
 // One output file: its name and the call that writes it into a transaction.
 struct FileJob {
     std::string target;
@@ -78,6 +64,39 @@ void write_all(const std::vector<FileJob>& jobs, unsigned threads) {
 
 }  // namespace
 
+PreparedOutputs prepare_outputs(const Options& o, const mesh::Mesh& mesh, MeshArrays& arrays) {
+    PreparedOutputs p;
+    if (o.jettison) jettison_unused_vertices(arrays);
+    // Mesh vertex ids <-> node indices (arrays.mesh_ids is node -> mesh id).
+    const std::vector<std::uint32_t> mesh_id = arrays.mesh_ids;
+    p.number.assign(mesh.vertex_end(), NeighbourSet::none);
+    for (std::uint32_t v = 0; v < mesh_id.size(); ++v) p.number[mesh_id[v]] = v;
+
+    // Edge markers are known by mesh vertex ids; the arrays may be renumbered.
+    p.mesh_marker = edge_markers(mesh);
+    const EdgeMarker marker = [&p, &mesh_id](std::uint32_t a, std::uint32_t b, bool boundary) {
+        return p.mesh_marker(mesh_id[a], mesh_id[b], boundary);
+    };
+
+    // Computed before -o2 changes the triangles to six nodes.
+    if (o.write_edges) p.edges = edges_of(arrays, marker);
+    if (o.write_voronoi) p.voronoi = voronoi_of(arrays);
+    if (o.write_off) p.edge_count = count_edges(arrays).edges;
+    if (o.order == 2) make_second_order(arrays, marker);
+    return p;
+}
+
+SegmentSet subsegments_of(const mesh::Mesh& mesh, const PreparedOutputs& prepared) {
+    SegmentSet segments;
+    mesh::for_each_edge(mesh, [&](const mesh::EdgeView& e) {
+        if (!e.subsegment) return;
+        segments.endpoints.push_back(prepared.number[index(e.from)]);
+        segments.endpoints.push_back(prepared.number[index(e.to)]);
+        segments.markers.push_back(prepared.mesh_marker(index(e.from), index(e.to), e.hull));
+    });
+    return segments;
+}
+
 std::vector<std::string> write_outputs(const OutputRequest& request, const mesh::Mesh& mesh,
                                        MeshArrays& arrays) {
     const Options& o = *request.options;
@@ -85,27 +104,12 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
     const io::WriteFormat format{request.base, !o.no_boundary_markers,
                                  o.command.empty() ? std::string("gpdr") : o.command};
 
-    if (o.jettison) jettison_unused_vertices(arrays);
-    // Mesh vertex ids <-> node indices (arrays.mesh_ids is node -> mesh id).
-    const std::vector<std::uint32_t> mesh_id = arrays.mesh_ids;
-    std::vector<std::uint32_t> number(mesh.vertex_end(), NeighbourSet::none);
-    for (std::uint32_t v = 0; v < mesh_id.size(); ++v) number[mesh_id[v]] = v;
-
-    // Edge markers are known by mesh vertex ids; the arrays may be renumbered.
-    const EdgeMarker mesh_marker = edge_markers(mesh);
-    const EdgeMarker marker = [&](std::uint32_t a, std::uint32_t b, bool boundary) {
-        return mesh_marker(mesh_id[a], mesh_id[b], boundary);
-    };
-
-    // Computed before -o2 changes the triangles to six nodes.
     const bool want_poly =
         (o.poly || request.write_hull_poly) && !o.no_poly_output && !names.out_poly.empty();
-    EdgeSet edges;
-    if (o.write_edges) edges = edges_of(arrays, marker);
-    VoronoiDiagram voronoi;
-    if (o.write_voronoi) voronoi = voronoi_of(arrays);
-    const std::uint64_t edge_count = o.write_off ? count_edges(arrays).edges : 0;
-    if (o.order == 2) make_second_order(arrays, marker);
+    const PreparedOutputs prepared = prepare_outputs(o, mesh, arrays);
+    const EdgeSet& edges = prepared.edges;
+    const VoronoiDiagram& voronoi = prepared.voronoi;
+    const std::uint64_t edge_count = prepared.edge_count;
 
     // Each job keeps what it needs by value or refers to data that stays
     // put until write_all returns; all of it is only read.
@@ -129,7 +133,7 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
             poly.nodes.attribute_count = arrays.nodes.attribute_count;
             // write_poly() takes the header's marker column from nodes.markers.
             if (arrays.nodes.has_markers()) poly.nodes.markers.assign(1, 0);
-            poly.segments = subsegments_of(mesh, number, mesh_marker);
+            poly.segments = subsegments_of(mesh, prepared);
             if (request.poly) {
                 poly.holes = request.poly->holes;
                 poly.regions = request.poly->regions;

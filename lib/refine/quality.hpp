@@ -19,6 +19,7 @@
 // of its arguments is).
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "geometry/constructions.hpp"
@@ -31,8 +32,9 @@ namespace gpdr::refine {
 // Triangle's triunsuitable() prototype: each pointer addresses x then y of
 // one corner (corners counter-clockwise: org, dest, apex); area > 0.  gpdr
 // passes copies of the coordinates only (vertex attributes stay with the
-// caller).  Non-zero: the triangle is too big / unsuitable, refine it.
-using UserTest = int (*)(double* org, double* dest, double* apex, double area);
+// caller).  Non-zero: the triangle is too big / unsuitable, refine it.  A
+// function object, so that a library caller's test can carry its own data.
+using UserTest = std::function<int(double* org, double* dest, double* apex, double area)>;
 
 struct QualityCriteria {
     double min_angle_degrees = 0;  // -q; 0: no angle test

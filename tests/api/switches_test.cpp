@@ -347,3 +347,33 @@ TEST_CASE("parse_placement takes names and numbers", "[api][switches]") {
     for (auto p : {Placement::circumcentre, Placement::off_centre, Placement::optimisation})
         CHECK(parse_placement(gpdr::placement_name(p)) == p);
 }
+
+TEST_CASE("the library dialect reads switches as Triangle's library does", "[api][switches]") {
+    const auto library = [](const char* text) {
+        Options o;
+        gpdr::parse_switches(text, o, gpdr::SwitchDialect::library);
+        return o;
+    };
+    const auto program = [](const char* text) {
+        Options o;
+        gpdr::parse_switches(text, o);
+        return o;
+    };
+    // What is not a switch is skipped, here and only here.
+    CHECK(describe(library("Qz{a0.2}")) == describe(program("-Qza0.2")));
+    CHECK(describe(library("-p -q")) == describe(program("-pq")));
+    CHECK_THROWS_AS(program("-Qz{a0.2}"), gpdr::UsageError);
+    // h asks for nothing, and does not stop the reading.
+    CHECK(describe(library("phq")) == describe(program("-pq")));
+    // L is Triangle's other name for D.
+    CHECK(library("pL").conforming_delaunay);
+    CHECK_THROWS_AS(program("-pL"), gpdr::UsageError);
+    // Weighted triangulations are refused, not skipped.
+    CHECK_THROWS_WITH(library("pw"), Catch::Contains("weighted"));
+    CHECK_THROWS_WITH(library("pW"), Catch::Contains("weighted"));
+    // Numbers: as the program reads them, errors included.
+    CHECK(library("a1e-3").max_area == 1e-3);
+    CHECK(library("q32.5j4").min_angle == 32.5);
+    CHECK(library("q32.5j4").threads == 4);
+    CHECK_THROWS_AS(library("q70"), gpdr::UsageError);
+}

@@ -4,6 +4,7 @@
 // once it has turned argv into Options.
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -29,8 +30,10 @@ struct JobResult {
     bool checked = false;
     std::vector<std::string> check_problems;
 
-    // -V: human-readable statistics lines prepared by the library (no printing
-    // happens in the library; apps/gpdr prints these).
+    // Human-readable statistics lines prepared by the library (no printing
+    // happens in the library): timings and counts always; with -V also the
+    // threads' times and the quality statistics.  apps/gpdr prints them for
+    // -V, libtriangle unless Q.
     std::vector<std::string> statistics;
 };
 
@@ -39,9 +42,15 @@ struct JobResult {
 // from several threads at once, so it must be thread-safe.
 using Triunsuitable = int (*)(double* org, double* dest, double* apex, double area);
 
+// The same test as a function object, which may carry data of its own (a
+// library caller's callback and its user data).
+using UnsuitableTest = std::function<int(double* org, double* dest, double* apex, double area)>;
+
 // Code the application plugs into the job (linked in, or loaded with dlopen).
+// -u needs one of the two; `unsuitable` wins when both are set.
 struct JobPlugins {
-    Triunsuitable triunsuitable = nullptr;  // required by -u
+    Triunsuitable triunsuitable = nullptr;
+    UnsuitableTest unsuitable;
 };
 
 // Runs the whole job.  Throws gpdr::Error subclasses on bad input or output;

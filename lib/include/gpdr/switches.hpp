@@ -11,6 +11,18 @@
 
 namespace gpdr {
 
+// Who wrote the switches: a command line (the gpdr program), or a program
+// calling Triangle's library (triangulate(), capi/), which reads them as
+// Triangle's library does where the two differ:
+//   - a character that is not a switch is skipped, not an error ("Qz{a0.2}",
+//     a leading '-');
+//   - h, H and ? do nothing;
+//   - L means D, as in Triangle's parser;
+//   - w and W (Triangle's weighted triangulations) are errors naming them.
+// Numbers are read the same way in both: locale-independently, with the
+// program's exponents and range checks.
+enum class SwitchDialect { program, library };
+
 // Applies one cluster of switch letters, with or without its leading '-', to
 // `options`.  Several clusters apply in turn ("-p" then "-q30" equals
 // "-pq30"); a later value replaces an earlier one.  Stops at 'h' (also 'H'
@@ -18,7 +30,8 @@ namespace gpdr {
 // Throws UsageError naming the cluster for an unknown letter, a malformed
 // number, or a value out of range (-q outside [0, 60), -a not above zero,
 // -P other than 0, 1, 2).
-void parse_switches(std::string_view cluster, Options& options);
+void parse_switches(std::string_view cluster, Options& options,
+                    SwitchDialect dialect = SwitchDialect::program);
 
 // A placement strategy by name ("circumcentre", "off-centre",
 // "optimisation", American spellings too) or number ("0", "1", "2"), as

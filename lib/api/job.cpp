@@ -198,20 +198,20 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
     return result;
 }
 
-MemoryJobResult run_job_in_memory(const Options& given_options, MeshInput given,
-                                  const WarningSink& warn, const JobPlugins& plugins) {
-    Options options = given_options;
+MemoryJobResult run_job_in_memory(const Options& given, MeshInput input, const WarningSink& warn,
+                                  const JobPlugins& plugins) {
+    Options options = given;
     options.write_off = false;  // -g makes only a file
     if (options.help) throw UsageError("-h: there is no help text to print in library mode");
     MemoryJobResult out;
     JobResult& result = out.report;
     Stopwatch clock;
 
-    api::Input input = api::input_from_memory(options, std::move(given));
-    result.input_vertices = input.nodes.data.size();
+    api::Input in = api::input_from_memory(options, std::move(input));
+    result.input_vertices = in.nodes.data.size();
     result.read_seconds = clock.lap();
 
-    Meshed m = make_mesh(options, input, warn, plugins, true, result, clock);
+    Meshed m = make_mesh(options, in, warn, plugins, true, result, clock);
     out.mesh = api::output_in_memory(options, m.tri.mesh, m.arrays);
     result.write_seconds += clock.lap();
 

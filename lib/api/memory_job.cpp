@@ -62,10 +62,10 @@ private:
 
 }  // namespace
 
-Input input_from_memory(const Options& options, MeshInput given) {
+Input input_from_memory(const Options& options, MeshInput input) {
     const int base = options.zero_based ? 0 : 1;
-    const InputChecker check(given.name, base);
-    NodeSet& nodes = given.nodes;
+    const InputChecker check(input.name, base);
+    NodeSet& nodes = input.nodes;
     check.size(nodes.xy.size(), nodes.size(), 2, "the vertex list");
     check.finite(nodes.xy, "vertex", 2);
     check.size(nodes.attributes.size(), nodes.size(), nodes.attribute_count,
@@ -73,27 +73,27 @@ Input input_from_memory(const Options& options, MeshInput given) {
     check.markers(nodes.markers.size(), nodes.size(), "the vertex marker list");
 
     Input in;
-    in.node_file = in.poly_file = in.ele_file = given.name;
+    in.node_file = in.poly_file = in.ele_file = input.name;
     if (options.poly) {
-        const SegmentSet& segments = given.segments;
+        const SegmentSet& segments = input.segments;
         check.size(segments.endpoints.size(), segments.size(), 2, "the segment list");
         check.indices(segments.endpoints, nodes.size(), 2, "segment");
         check.markers(segments.markers.size(), segments.size(), "the segment marker list");
-        if (given.holes.size() % 2 != 0) check.fail("the hole list has an odd number of values");
-        check.finite(given.holes, "hole", 2);
-        for (std::size_t r = 0; r < given.regions.size(); ++r) {
-            const Region& region = given.regions[r];
+        if (input.holes.size() % 2 != 0) check.fail("the hole list has an odd number of values");
+        check.finite(input.holes, "hole", 2);
+        for (std::size_t r = 0; r < input.regions.size(); ++r) {
+            const Region& region = input.regions[r];
             if (!std::isfinite(region.x) || !std::isfinite(region.y))
                 check.fail(fmt::format("region {} has a coordinate that is not a finite number",
                                        r + std::size_t(base)));
         }
         PolyFile& poly = in.poly.emplace();
-        poly.segments = std::move(given.segments);
-        poly.holes = std::move(given.holes);
-        poly.regions = std::move(given.regions);
+        poly.segments = std::move(input.segments);
+        poly.holes = std::move(input.holes);
+        poly.regions = std::move(input.regions);
     }
     if (options.refine) {
-        EleSet& triangles = given.triangles;
+        EleSet& triangles = input.triangles;
         if (triangles.corners_per_triangle < 3)
             check.fail(fmt::format("triangles must have at least 3 corners, not {}",
                                    triangles.corners_per_triangle));
@@ -103,10 +103,10 @@ Input input_from_memory(const Options& options, MeshInput given) {
         check.size(triangles.attributes.size(), triangles.size(), triangles.attribute_count,
                    "the triangle attribute list");
         if (options.regional_area) {
-            if (given.areas.size() != triangles.size())
-                check.fail(fmt::format("{} area bounds for {} triangles", given.areas.size(),
+            if (input.areas.size() != triangles.size())
+                check.fail(fmt::format("{} area bounds for {} triangles", input.areas.size(),
                                        triangles.size()));
-            in.areas = std::move(given.areas);
+            in.areas = std::move(input.areas);
         }
         in.triangles = std::move(triangles);
     }

@@ -359,7 +359,15 @@ static void pslg_then_refined_output(void) {
     CHECK(triangulate("prazBPQ", &mesh, &refined, NULL) == 0);
     CHECK(capi_valid_triangles(&refined, 0));
     CHECK(fabs(capi_total_area(&refined, 0) - 96) < 1e-9);
-    CHECK(refined.numberoftriangles >= 4 * mesh.numberoftriangles);
+    /* Every triangle's bound is one of those given, each a quarter of a
+       first triangle's area: no first triangle survives, and no refined
+       triangle is larger than the largest bound. */
+    double largest_bound = 0;
+    for (int t = 0; t < mesh.numberoftriangles; ++t)
+        if (areas[t] > largest_bound) largest_bound = areas[t];
+    CHECK(refined.numberoftriangles > 2 * mesh.numberoftriangles);
+    for (int t = 0; t < refined.numberoftriangles; ++t)
+        CHECK(capi_area2(&refined, t, 0) / 2 <= largest_bound * (1 + 1e-12));
     CHECK(refined.pointmarkerlist == NULL && refined.segmentlist == NULL); /* B, P */
     CHECK(refined.numberofsegments > mesh.numberofsegments);
     CHECK(refined.numberoftriangleattributes == 1 && refined.triangleattributelist);

@@ -39,6 +39,33 @@ static inline struct triangulateio capi_empty(void) {
     return io;
 }
 
+/* The unit square's corners and its centre (a point set). */
+static inline struct triangulateio capi_square_points(void) {
+    static const double square[] = {0, 0, 1, 0, 1, 1, 0, 1, 0.5, 0.5};
+    struct triangulateio in = capi_empty();
+    in.pointlist = (double*)square;
+    in.numberofpoints = 5;
+    return in;
+}
+
+/* A 10 x 10 square with a 2 x 2 square hole in the middle, numbered from 1:
+   outer segments marked 5, the hole's 7. */
+static inline struct triangulateio capi_frame(void) {
+    static const double points[] = {0, 0, 10, 0, 10, 10, 0, 10, 4, 4, 6, 4, 6, 6, 4, 6};
+    static int segments[] = {1, 2, 2, 3, 3, 4, 4, 1, 5, 6, 6, 7, 7, 8, 8, 5};
+    static int markers[] = {5, 5, 5, 5, 7, 7, 7, 7};
+    static double hole[] = {5, 5};
+    struct triangulateio in = capi_empty();
+    in.pointlist = (double*)points;
+    in.numberofpoints = 8;
+    in.segmentlist = segments;
+    in.segmentmarkerlist = markers;
+    in.numberofsegments = 8;
+    in.holelist = hole;
+    in.numberofholes = 1;
+    return in;
+}
+
 /* Frees every array of an output structure (not holelist and regionlist,
    which are the input's). */
 static inline void capi_free_output(struct triangulateio* io) {

@@ -11,15 +11,6 @@
 
 #include "capi_support.h"
 
-static const double square[] = {0, 0, 1, 0, 1, 1, 0, 1, 0.5, 0.5};
-
-static struct triangulateio square_points(void) {
-    struct triangulateio in = capi_empty();
-    in.pointlist = (double*)square;
-    in.numberofpoints = 5;
-    return in;
-}
-
 /* triangulate() on `in` must fail with a message that contains `expected`,
    set the counts of `out` (and `vorout`) to 0 and leave their pointers. */
 static void expect_error(const char* switches, struct triangulateio* in, int with_vorout,
@@ -44,7 +35,7 @@ static void expect_error(const char* switches, struct triangulateio* in, int wit
 }
 
 static void errors_are_returned(void) {
-    struct triangulateio in = square_points();
+    struct triangulateio in = capi_square_points();
     expect_error("pwQ", &in, 0, "weighted");
     expect_error("q70Q", &in, 0, "q70");
     expect_error("vQ", &in, 0, "vorout");
@@ -72,7 +63,7 @@ static void errors_are_returned(void) {
     expect_error("Q", &collinear, 0, "collinear");
 
     /* -r: a triangle with a corner out of range, and area bounds missing. */
-    struct triangulateio mesh = square_points();
+    struct triangulateio mesh = capi_square_points();
     int triangles[] = {1, 2, 5, 2, 3, 6};
     mesh.trianglelist = triangles;
     mesh.numberoftriangles = 2;
@@ -91,7 +82,7 @@ static void errors_are_returned(void) {
 /* In library mode Triangle skips characters that are not switches, and so
    does libtriangle; h does nothing. */
 static void library_switches(void) {
-    struct triangulateio in = square_points(), out = capi_empty();
+    struct triangulateio in = capi_square_points(), out = capi_empty();
     CHECK(triangulate("Qz{a0.02}", &in, &out, NULL) == 0);
     CHECK(out.numberoftriangles >= 50);
     CHECK(capi_valid_triangles(&out, 0));
@@ -115,7 +106,7 @@ static int run_child(char* switches, char* text, size_t size) {
     if (child == 0) {
         dup2(pipe_ends[1], 1);
         close(pipe_ends[0]);
-        struct triangulateio in = square_points(), out = capi_empty();
+        struct triangulateio in = capi_square_points(), out = capi_empty();
         triangulate(switches, &in, &out, NULL);
         fflush(stdout);
         _exit(0);

@@ -17,20 +17,10 @@ int triunsuitable(double* org, double* dest, double* apex, double area) {
     return area > unsuitable_area;
 }
 
-/* The unit square's corners and its centre. */
-static const double square[] = {0, 0, 1, 0, 1, 1, 0, 1, 0.5, 0.5};
-
-static struct triangulateio square_points(void) {
-    struct triangulateio in = capi_empty();
-    in.pointlist = (double*)square;
-    in.numberofpoints = 5;
-    return in;
-}
-
 static void delaunay_of_points(void) {
     for (int zero = 0; zero <= 1; ++zero) {
         const int base = zero ? 0 : 1;
-        struct triangulateio in = square_points(), out = capi_empty();
+        struct triangulateio in = capi_square_points(), out = capi_empty();
         CHECK(triangulate(zero ? "zQ" : "Q", &in, &out, NULL) == 0);
         CHECK(out.numberofpoints == 5);
         CHECK(out.numberoftriangles == 4);
@@ -39,7 +29,7 @@ static void delaunay_of_points(void) {
         CHECK(out.numberofsegments == 4); /* no segments used: the hull's edges */
         CHECK(capi_valid_triangles(&out, base));
         CHECK(fabs(capi_total_area(&out, base) - 1) < 1e-12);
-        CHECK(memcmp(out.pointlist, square, sizeof square) == 0);
+        CHECK(memcmp(out.pointlist, in.pointlist, 10 * sizeof(double)) == 0);
         /* The hull's corners are on the boundary (1), the centre is not (0). */
         CHECK(out.pointmarkerlist != NULL);
         for (int v = 0; v < 5 && out.pointmarkerlist; ++v) CHECK(out.pointmarkerlist[v] == (v < 4));
@@ -52,27 +42,10 @@ static void delaunay_of_points(void) {
 
 /* A 10 x 10 square with a 2 x 2 square hole in the middle: segments marked 5
    outside and 7 around the hole. */
-static const double frame_points[] = {0, 0, 10, 0, 10, 10, 0, 10, 4, 4, 6, 4, 6, 6, 4, 6};
-static int frame_segments[] = {1, 2, 2, 3, 3, 4, 4, 1, 5, 6, 6, 7, 7, 8, 8, 5};
-static int frame_markers[] = {5, 5, 5, 5, 7, 7, 7, 7};
-static double frame_hole[] = {5, 5};
-
-static struct triangulateio frame(void) {
-    struct triangulateio in = capi_empty();
-    in.pointlist = (double*)frame_points;
-    in.numberofpoints = 8;
-    in.segmentlist = frame_segments;
-    in.segmentmarkerlist = frame_markers;
-    in.numberofsegments = 8;
-    in.holelist = frame_hole;
-    in.numberofholes = 1;
-    return in;
-}
-
 static int inside_hole(const double* p) { return p[0] > 4 && p[0] < 6 && p[1] > 4 && p[1] < 6; }
 
 static void quality_pslg_with_hole(void) {
-    struct triangulateio in = frame(), out = capi_empty();
+    struct triangulateio in = capi_frame(), out = capi_empty();
     CHECK(triangulate("pq30a0.5j2Q", &in, &out, NULL) == 0);
     CHECK(out.numberoftriangles > 200);
     CHECK(capi_valid_triangles(&out, 1));
@@ -102,7 +75,7 @@ static void quality_pslg_with_hole(void) {
 }
 
 static void edges_neighbours_voronoi(void) {
-    struct triangulateio in = square_points(), out = capi_empty(), vor = capi_empty();
+    struct triangulateio in = capi_square_points(), out = capi_empty(), vor = capi_empty();
     CHECK(triangulate("envQ", &in, &out, &vor) == 0);
     CHECK(out.numberofedges == 8 && out.edgelist && out.edgemarkerlist && out.neighborlist);
     int boundary = 0;
@@ -148,7 +121,7 @@ static void edges_neighbours_voronoi(void) {
 }
 
 static void refine_previous_mesh(void) {
-    struct triangulateio in = square_points(), first = capi_empty(), out = capi_empty();
+    struct triangulateio in = capi_square_points(), first = capi_empty(), out = capi_empty();
     CHECK(triangulate("Q", &in, &first, NULL) == 0);
     double areas[4] = {0.01, 0.01, 0.2, 0.2};
     first.trianglearealist = areas;
@@ -163,7 +136,7 @@ static void refine_previous_mesh(void) {
 }
 
 static void second_order(void) {
-    struct triangulateio in = square_points(), out = capi_empty();
+    struct triangulateio in = capi_square_points(), out = capi_empty();
     CHECK(triangulate("o2Q", &in, &out, NULL) == 0);
     CHECK(out.numberofcorners == 6 && out.numberoftriangles == 4);
     CHECK(out.numberofpoints == 5 + 8); /* a node at each edge's midpoint */
@@ -217,9 +190,9 @@ static void regional_attributes_and_areas(void) {
 /* Vertex attributes are interpolated linearly at new vertices, so a linear
    function of position stays exact. */
 static void vertex_attributes(void) {
+    struct triangulateio in = capi_square_points(), out = capi_empty();
     double attributes[5];
-    for (int v = 0; v < 5; ++v) attributes[v] = square[2 * v] + 2 * square[2 * v + 1];
-    struct triangulateio in = square_points(), out = capi_empty();
+    for (int v = 0; v < 5; ++v) attributes[v] = in.pointlist[2 * v] + 2 * in.pointlist[2 * v + 1];
     in.pointattributelist = attributes;
     in.numberofpointattributes = 1;
     CHECK(triangulate("qa0.01Q", &in, &out, NULL) == 0);
@@ -235,14 +208,14 @@ static void vertex_attributes(void) {
 /* Arrays the caller allocated are filled in place; switches that leave an
    output out leave its pointers alone. */
 static void caller_arrays_and_omissions(void) {
-    struct triangulateio in = square_points(), out = capi_empty();
+    struct triangulateio in = capi_square_points(), out = capi_empty();
     double points[10];
     int triangles[12];
     out.pointlist = points;
     out.trianglelist = triangles;
     CHECK(triangulate("BQ", &in, &out, NULL) == 0);
     CHECK(out.pointlist == points && out.trianglelist == triangles);
-    CHECK(memcmp(points, square, sizeof square) == 0);
+    CHECK(memcmp(points, in.pointlist, sizeof points) == 0);
     CHECK(out.pointmarkerlist == NULL); /* B: no markers */
     CHECK(capi_valid_triangles(&out, 1));
 
@@ -269,7 +242,7 @@ static void duplicates_and_jettison(void) {
 }
 
 static void convex_hull_segments(void) {
-    struct triangulateio in = square_points(), out = capi_empty();
+    struct triangulateio in = capi_square_points(), out = capi_empty();
     CHECK(triangulate("cQ", &in, &out, NULL) == 0);
     CHECK(out.numberofsegments == 4 && out.segmentlist && out.segmentmarkerlist);
     for (int s = 0; s < out.numberofsegments && out.segmentlist; ++s) {
@@ -281,7 +254,7 @@ static void convex_hull_segments(void) {
 }
 
 static void user_test(void) {
-    struct triangulateio in = square_points(), out = capi_empty();
+    struct triangulateio in = capi_square_points(), out = capi_empty();
     CHECK(triangulate("uQ", &in, &out, NULL) == 0);
     CHECK(out.numberoftriangles >= 50);
     for (int t = 0; t < out.numberoftriangles; ++t)
@@ -306,7 +279,7 @@ static void unsuitable_callback(void) {
     options.threads = 2;
     options.unsuitable = larger_than;
     options.user_data = &limit;
-    struct triangulateio in = square_points(), out = capi_empty();
+    struct triangulateio in = capi_square_points(), out = capi_empty();
     CHECK(gpdr_triangulate_ex("uQ", &in, &out, NULL, &options) == 0);
     CHECK(out.numberoftriangles >= 200);
     for (int t = 0; t < out.numberoftriangles; ++t) CHECK(capi_area2(&out, t, 1) / 2 <= limit);

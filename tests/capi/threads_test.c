@@ -13,21 +13,6 @@
 
 enum { thread_count = 8, rounds = 6 };
 
-static const double frame_points[] = {0, 0, 10, 0, 10, 10, 0, 10, 4, 4, 6, 4, 6, 6, 4, 6};
-static int frame_segments[] = {1, 2, 2, 3, 3, 4, 4, 1, 5, 6, 6, 7, 7, 8, 8, 5};
-static double frame_hole[] = {5, 5};
-
-static struct triangulateio frame(void) {
-    struct triangulateio in = capi_empty();
-    in.pointlist = (double*)frame_points;
-    in.numberofpoints = 8;
-    in.segmentlist = frame_segments;
-    in.numberofsegments = 8;
-    in.holelist = frame_hole;
-    in.numberofholes = 1;
-    return in;
-}
-
 /* Each thread's sequential switches differ in their area bound. */
 static void switches_of(int thread, char* text, size_t size) {
     snprintf(text, size, "pq28a%gQ", 0.05 + 0.01 * thread);
@@ -47,7 +32,7 @@ static void* work(void* argument) {
     char switches[64];
     switches_of(thread, switches, sizeof switches);
     for (int round = 0; round < rounds; ++round) {
-        struct triangulateio in = frame(), out = capi_empty();
+        struct triangulateio in = capi_frame(), out = capi_empty();
         if (triangulate(switches, &in, &out, NULL) != 0) ++failures[thread];
         if (!same_mesh(&out, &reference[thread])) ++failures[thread];
         capi_free_output(&out);
@@ -67,7 +52,7 @@ int main(void) {
     for (int t = 0; t < thread_count; ++t) {
         char switches[64];
         switches_of(t, switches, sizeof switches);
-        struct triangulateio in = frame();
+        struct triangulateio in = capi_frame();
         reference[t] = capi_empty();
         CHECK(triangulate(switches, &in, &reference[t], NULL) == 0);
         CHECK(reference[t].numberoftriangles > 1000);

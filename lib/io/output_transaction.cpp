@@ -3,7 +3,7 @@
 // one file system and is atomic) and renamed into place only by commit();
 // a transaction that is destroyed first removes its temporaries, so a failed
 // run never leaves a truncated file nor clobbers the result of an earlier one
-// (docs/design.md, "Errors and files").  Each file is synced to the disk
+// (docs/architecture.md, "Errors and files").  Each file is synced to the disk
 // before its rename and the folders after them, and every temporary is
 // listed where a signal handler can remove it (temporary_files.hpp).
 

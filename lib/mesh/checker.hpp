@@ -1,5 +1,5 @@
 #pragma once
-// The invariant checker (docs/design.md: tests run it after every operation in
+// The invariant checker (docs/architecture.md: tests run it after every operation in
 // small cases; -C runs it on the result, as Triangle's -C does).
 //
 // It checks, for every live triangle:

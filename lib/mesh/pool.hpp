@@ -1,5 +1,5 @@
 #pragma once
-// Pool: the allocator one thread owns (docs/design.md, "The mesh", paper §3.1).
+// Pool: the allocator one thread owns (docs/architecture.md, "The mesh", paper §3.1).
 //
 // Triangles: a pool hands out slots from its own intrusive free list (dead
 // slots linked through n[0]) and, when that is empty, from a fresh chunk it

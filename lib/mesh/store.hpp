@@ -1,5 +1,5 @@
 #pragma once
-// ChunkTable: storage whose elements never move (docs/design.md, "The mesh").
+// ChunkTable: storage whose elements never move (docs/architecture.md, "The mesh").
 //
 // Element i lives in chunk i >> ChunkBits at offset i & mask.  The table of
 // chunk pointers is reserved up front, so an id handed out once stays valid

@@ -1,5 +1,5 @@
 #pragma once
-// The triangle record: 32 bytes, index-based (docs/design.md, "The mesh").
+// The triangle record: 32 bytes, index-based (docs/architecture.md, "The mesh").
 //
 /*
                  v[2]

@@ -1,6 +1,6 @@
 #pragma once
 // The quadtree that overlays the mesh during parallel refinement (GPDR paper
-// §3; docs/design.md, "Parallel refinement").
+// §3; docs/architecture.md, "Parallel refinement").
 //
 // Conventions (written down once, used everywhere in parallel/):
 //   - A node is a square cell: level k has side ℓ_k = ℓ_root 2^-k and cell

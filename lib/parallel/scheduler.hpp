@@ -1,6 +1,6 @@
 #pragma once
 // The master's scheduling decisions, in one place: which leaf a free worker
-// gets, and what happens when it returns (docs/design.md, "Parallel
+// gets, and what happens when it returns (docs/architecture.md, "Parallel
 // refinement").
 //
 // Buffer zones.  BUF(L) = { L' != L : dist(L, L') < (ℓe(L) + ℓe(L'))/2 },

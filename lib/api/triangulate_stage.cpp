@@ -105,6 +105,13 @@ void triangulate_pslg(const Options& options, Input& in, Triangulated& out,
                                      return fmt::format("{} (same as {})", d.first + base,
                                                         d.second + base);
                                  }))});
+    if (!report.overlapping_segments.empty())
+        warn(Warning{in.poly_file, 0,
+                     fmt::format("segments overlap; each shared stretch was kept once: {}",
+                                 list_some(report.overlapping_segments, [&](const auto& d) {
+                                     return fmt::format("segments {} and {}", d.first + base,
+                                                        d.second + base);
+                                 }))});
     std::vector<triangulate::NewSegmentVertex> crossings;
     for (const auto& v : report.new_vertices)
         if (v.other_segment != triangulate::NewSegmentVertex::no_segment) crossings.push_back(v);
@@ -128,8 +135,13 @@ void triangulate_pslg(const Options& options, Input& in, Triangulated& out,
         n.t = v.t;
         out.new_vertices.push_back(n);
     }
-    out.segment_ends.reserve(pslg.segments.size());
-    for (const std::uint32_t v : pslg.segments) out.segment_ends.push_back(mesh::VertexId{v});
+    // Refinement sees the pieces: a segment cut at a crossing is two
+    // segments meeting at an input vertex, as in Triangle.
+    out.segment_ends.reserve(2 * report.pieces.size());
+    for (const triangulate::SegmentPiece& piece : report.pieces) {
+        out.segment_ends.push_back(mesh::VertexId{piece.a});
+        out.segment_ends.push_back(mesh::VertexId{piece.b});
+    }
     if (options.region_attributes) {
         out.triangle_attribute_count = 1;
         out.region_attributes.assign(poly.regions.size() + 1, 0.0);

@@ -229,4 +229,27 @@ inline double approximate(int n, const double* e) {
 // (1 - u)^7 (1 + 8u) >= (1 - 7u)(1 + 8u) = 1 + u - 56u^2 > 1.
 inline double widen(double x) { return x * (1.0 + 8.0 * kUnitRoundoff); }
 
+// An exact coordinate difference a - b as an expansion of <= 2 components.
+struct Diff {
+    double c[2];
+    int n;
+};
+
+inline Diff exact_diff(double a, double b) {
+    Diff d{};
+    double x, y;
+    two_diff(a, b, x, y);
+    d.n = make_pair(x, y, d.c);
+    return d;
+}
+
+// h = a b - c d exactly for exact differences (<= 16 components).
+inline int cross_difference(const Diff& a, const Diff& b, const Diff& c, const Diff& d, double* h) {
+    double p[8], q[8], scratch[12];
+    const int np = expansion_product(a.n, a.c, b.n, b.c, p, scratch);
+    const int nq = expansion_product(c.n, c.c, d.n, d.c, q, scratch);
+    negate(nq, q);
+    return expansion_sum(np, p, nq, q, h);
+}
+
 }  // namespace gpdr::geometry::exact

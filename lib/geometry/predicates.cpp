@@ -100,29 +100,6 @@ int lift_times(double dx, double dy, int ne, const double* e, double* h) {
     return expansion_sum(n_t2, t2, n_s2, s2, h);
 }
 
-// An exact coordinate difference a - b as an expansion of <= 2 components.
-struct Diff {
-    double c[2];
-    int n;
-};
-
-Diff exact_diff(double a, double b) {
-    Diff d{};
-    double x, y;
-    two_diff(a, b, x, y);
-    d.n = make_pair(x, y, d.c);
-    return d;
-}
-
-// h = a b - c d exactly for exact differences (<= 16 components).
-int cross_difference(const Diff& a, const Diff& b, const Diff& c, const Diff& d, double* h) {
-    double p[8], q[8], scratch[12];
-    const int np = expansion_product(a.n, a.c, b.n, b.c, p, scratch);
-    const int nq = expansion_product(c.n, c.c, d.n, d.c, q, scratch);
-    negate(nq, q);
-    return expansion_sum(np, p, nq, q, h);
-}
-
 // h = (dx^2 + dy^2) * (b_x c_y - c_x b_y) exactly (<= 512 components).
 int lifted_cross(const Diff& dx, const Diff& dy, const Diff& bx, const Diff& by, const Diff& cx,
                  const Diff& cy, double* h) {

@@ -45,7 +45,7 @@ void star(const Mesh& mesh, TriangleId t0, VertexId v, std::vector<TriangleId>& 
 
 }  // namespace
 
-std::vector<std::string> check_conformity(const Mesh& mesh, const Pslg& pslg,
+std::vector<std::string> check_conformity(const Mesh& mesh, [[maybe_unused]] const Pslg& pslg,
                                           const CdtReport& report, std::size_t max_problems) {
     std::vector<std::string> problems;
     std::size_t dropped = 0;
@@ -64,28 +64,14 @@ std::vector<std::string> check_conformity(const Mesh& mesh, const Pslg& pslg,
         for (VertexId v : t.v)
             if (index(v) < vertex_end) corner[index(v)] = TriangleId{i};
     }
-    std::vector<std::uint32_t> kept(pslg.points.size());
-    for (std::uint32_t i = 0; i < kept.size(); ++i) kept[i] = i;
-    for (auto [lost, k] : report.duplicate_vertices)
-        if (lost < kept.size()) kept[lost] = k;
-
-    // Vertices the CDT put on each segment (crossings are rounded, so they
-    // may lie just off its line).
-    std::vector<std::vector<VertexId>> listed(pslg.segment_count());
-    auto list = [&](std::uint32_t s, VertexId v) {
-        if (s < listed.size()) listed[s].push_back(v);
-    };
-    for (const auto& nv : report.new_vertices) {
-        list(nv.segment, nv.vertex);
-        list(nv.other_segment, nv.vertex);
-    }
-    for (const auto& [s, v] : report.segments_through_vertices) list(s, v);
 
     std::vector<TriangleId> around;
     std::vector<std::uint8_t> visited(vertex_end, 0);
-    for (std::size_t s = 0; s < pslg.segment_count(); ++s) {
-        if (s < report.skipped.size() && report.skipped[s]) continue;
-        const VertexId a{kept[pslg.segments[2 * s]]}, b{kept[pslg.segments[2 * s + 1]]};
+    // The pieces the segments were cut into (arrangement.hpp): each is
+    // straight between two vertices, and nothing lies on its interior.
+    for (std::size_t s = 0; s < report.pieces.size(); ++s) {
+        const SegmentPiece& piece = report.pieces[s];
+        const VertexId a{piece.a}, b{piece.b};
         if (a == b) {
             add(fmt::format("segment {} has equal ends but was not reported as skipped", s));
             continue;
@@ -124,24 +110,18 @@ std::vector<std::string> check_conformity(const Mesh& mesh, const Pslg& pslg,
                     const std::pair<VertexId, int> ends[2] = {{c, prev3(i)}, {d, next3(i)}};
                     for (auto [w, k] : ends) {
                         const Point& pw = mesh.point(w);
-                        // A vertex the CDT reported on the segment may be a
-                        // rounded or snapped one: any direction (the visited
-                        // marks stop cycles).  Others must be exactly on it
-                        // and ahead.
-                        // So may one joined to v by a subsegment recorded as
-                        // a piece of this segment: refinement's split points
-                        // are rounded too.
+                        // A vertex joined to v by a subsegment recorded as
+                        // part of this piece may lie just off its line
+                        // (refinement's split points are rounded): any
+                        // direction (the visited marks stop cycles).  Others
+                        // must be exactly on it and ahead.
                         const SubsegmentInfo* info =
                             t.is_subsegment(k) ? mesh.subsegments().find(v, w) : nullptr;
-                        const bool is_listed =
-                            (info && info->segment == s) ||
-                            std::find(listed[s].begin(), listed[s].end(), w) != listed[s].end();
+                        const bool is_listed = info && info->segment == s;
                         const bool ahead = along(pv, pw, pa, pb) > 0;
                         if (!is_listed && !ahead) continue;
                         if (ahead && orient2d(pv, pw, pb) == 0) covered = true;
-                        // A Steiner point within rounding of the line counts
-                        // too: a crossing on a stretch two collinear segments
-                        // share is reported for one of them only.
+                        // So may a Steiner point within rounding of the line.
                         const double o = orient2d(pa, pb, pw);
                         const bool on = is_listed || o == 0 ||
                                         (mesh.kind(w) == VertexKind::segment &&
@@ -166,9 +146,7 @@ std::vector<std::string> check_conformity(const Mesh& mesh, const Pslg& pslg,
             for (std::uint32_t w = 0; w < vertex_end; ++w) {
                 if (corner[w] == no_triangle || visited[w]) continue;
                 const Point& pw = mesh.point(VertexId{w});
-                if (orient2d(pa, pb, pw) != 0 &&
-                    std::find(listed[s].begin(), listed[s].end(), VertexId{w}) == listed[s].end())
-                    continue;
+                if (orient2d(pa, pb, pw) != 0) continue;
                 const double ahead = along(pv, pw, pa, pb);
                 if (ahead <= 0 || (VertexId{w} != b && along(pw, pb, pa, pb) <= 0)) continue;
                 if (resume == no_vertex || ahead < best) {
@@ -184,8 +162,9 @@ std::vector<std::string> check_conformity(const Mesh& mesh, const Pslg& pslg,
         }
         for (VertexId v : touched) visited[index(v)] = 0;
         if (!reached)
-            add(fmt::format("segment {} ({}-{}): no subsegment leaves vertex {} along it", s,
-                            index(a), index(b), index(stuck == no_vertex ? a : stuck)));
+            add(fmt::format("segment {} ({}-{}): no subsegment leaves vertex {} along it",
+                            piece.segment, index(a), index(b),
+                            index(stuck == no_vertex ? a : stuck)));
     }
     if (dropped > 0) problems.push_back(fmt::format("... and {} more problems", dropped));
     return problems;

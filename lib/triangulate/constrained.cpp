@@ -15,6 +15,7 @@
 #include "geometry/predicates.hpp"
 #include "mesh/locate.hpp"
 #include "mesh/split_subsegment.hpp"
+#include "triangulate/arrangement.hpp"
 #include "triangulate/delaunay.hpp"
 #include "triangulate/domain.hpp"
 
@@ -428,31 +429,16 @@ TriangleId insert_segment(Pool& pool, VertexId a, VertexId b, SubsegmentInfo inf
     return find_start(mesh, b, t, buf);
 }
 
-mesh::Mesh triangulate_segments(const Pslg& pslg, CdtReport& report) {
-    report = CdtReport{};
-    const std::size_t n = pslg.points.size();
+namespace {
+
+// The surviving segments as pieces to arrange: duplicate vertices replaced
+// by the ones kept, zero-length and repeated segments left out (and
+// reported).
+std::vector<SegmentPiece> segments_to_arrange(const Pslg& pslg,
+                                              const std::vector<std::uint32_t>& kept,
+                                              CdtReport& report) {
     const std::size_t segments = pslg.segment_count();
-    if (pslg.segments.size() % 2 != 0)
-        throw GeometryError("segment list has an odd number of endpoints");
-    if (!pslg.segment_markers.empty() && pslg.segment_markers.size() != segments)
-        throw GeometryError("there are " + std::to_string(segments) + " segments but " +
-                            std::to_string(pslg.segment_markers.size()) + " segment markers");
-    for (std::size_t s = 0; s < segments; ++s)
-        for (int k = 0; k < 2; ++k)
-            if (pslg.segments[2 * s + k] >= n)
-                throw GeometryError("segment " + std::to_string(s) + " names vertex " +
-                                    std::to_string(pslg.segments[2 * s + k]) +
-                                    " but there are only " + std::to_string(n) + " vertices");
-
-    DelaunayReport dr;
-    Mesh mesh = delaunay(pslg.points, dr);
-    report.duplicate_vertices = dr.duplicates;
-    std::vector<std::uint32_t> kept(n);
-    for (std::uint32_t i = 0; i < n; ++i) kept[i] = i;
-    for (auto [lost, k] : dr.duplicates) kept[lost] = k;
     auto end_of = [&](std::size_t s, int k) { return kept[pslg.segments[2 * s + k]]; };
-
-    // Zero-length and duplicate segments (same two ends in either order).
     report.skipped.assign(segments, false);
     std::vector<std::pair<std::uint64_t, std::uint32_t>> keys;
     keys.reserve(segments);
@@ -476,42 +462,112 @@ mesh::Mesh triangulate_segments(const Pslg& pslg, CdtReport& report) {
         }
     }
     std::sort(report.duplicate_segments.begin(), report.duplicate_segments.end());
-    keys = {};
+    std::vector<SegmentPiece> pieces;
+    pieces.reserve(segments);
+    for (std::uint32_t s = 0; s < segments; ++s)
+        if (!report.skipped[s]) pieces.push_back({end_of(s, 0), end_of(s, 1), s, pslg.marker(s)});
+    return pieces;
+}
 
-    auto parameter = [&](std::uint32_t s, const Point& p) {
-        const Point& a = pslg.points[end_of(s, 0)];
-        const Point& b = pslg.points[end_of(s, 1)];
-        const double dx = b.x - a.x, dy = b.y - a.y;
-        return ((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy);
-    };
+// The parameter of p along input segment s (0 at its first end, 1 at its
+// second), for interpolating attributes.
+double parameter(const Pslg& pslg, const std::vector<std::uint32_t>& kept, std::uint32_t s,
+                 const Point& p) {
+    const Point& a = pslg.points[kept[pslg.segments[2 * std::size_t{s}]]];
+    const Point& b = pslg.points[kept[pslg.segments[2 * std::size_t{s} + 1]]];
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    return ((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy);
+}
 
-    {
-        Pool pool(mesh);
-        SegmentBuffer buf;
-        track_corners(mesh, buf);
-        mesh.subsegments().reserve(segments + segments / 4);
-        TriangleId hint = no_triangle;
-        for (std::uint32_t s = 0; s < segments; ++s) {
-            if (report.skipped[s]) continue;
-            const SubsegmentInfo info{pslg.marker(s), s};
-            hint = insert_segment(pool, VertexId{end_of(s, 0)}, VertexId{end_of(s, 1)}, info, hint,
-                                  buf);
-            for (const SegmentEvent& e : buf.events) {
-                if (e.kind == SegmentEvent::Kind::through_vertex) {
-                    report.segments_through_vertices.emplace_back(
-                        e.segment == SubsegmentInfo::no_segment ? s : e.segment, e.vertex);
-                    continue;
-                }
-                NewSegmentVertex nv;
-                nv.vertex = e.vertex;
-                nv.segment = s;
-                nv.t = parameter(s, mesh.point(e.vertex));
-                if (e.crossed.segment != SubsegmentInfo::no_segment) {
-                    nv.other_segment = e.crossed.segment;
-                    nv.other_t = parameter(e.crossed.segment, mesh.point(e.vertex));
-                }
-                report.new_vertices.push_back(nv);
+}  // namespace
+
+mesh::Mesh triangulate_segments(const Pslg& pslg, CdtReport& report) {
+    report = CdtReport{};
+    const std::size_t n = pslg.points.size();
+    const std::size_t segments = pslg.segment_count();
+    if (pslg.segments.size() % 2 != 0)
+        throw GeometryError("segment list has an odd number of endpoints");
+    if (!pslg.segment_markers.empty() && pslg.segment_markers.size() != segments)
+        throw GeometryError("there are " + std::to_string(segments) + " segments but " +
+                            std::to_string(pslg.segment_markers.size()) + " segment markers");
+    for (std::size_t s = 0; s < segments; ++s)
+        for (int k = 0; k < 2; ++k)
+            if (pslg.segments[2 * s + k] >= n)
+                throw GeometryError("segment " + std::to_string(s) + " names vertex " +
+                                    std::to_string(pslg.segments[2 * s + k]) +
+                                    " but there are only " + std::to_string(n) + " vertices");
+
+    DelaunayReport dr;
+    Mesh mesh = delaunay(pslg.points, dr);
+    report.duplicate_vertices = dr.duplicates;
+    std::vector<std::uint32_t> kept(n);
+    for (std::uint32_t i = 0; i < n; ++i) kept[i] = i;
+    for (auto [lost, k] : dr.duplicates) kept[lost] = k;
+
+    // Crossings, overlaps and vertices on segments, resolved before any
+    // segment is inserted (arrangement.hpp): the pieces meet only at ends.
+    std::vector<std::uint32_t> distinct;
+    distinct.reserve(n);
+    for (std::uint32_t i = 0; i < n; ++i)
+        if (kept[i] == i) distinct.push_back(i);
+    std::vector<Point> points(pslg.points.begin(), pslg.points.end());
+    ArrangementReport arranged;
+    report.pieces = arrange_segments(points, std::move(distinct),
+                                     segments_to_arrange(pslg, kept, report), arranged);
+    for (const auto& [s, v] : arranged.through_vertices)
+        report.segments_through_vertices.emplace_back(s, VertexId{v});
+    report.overlapping_segments = std::move(arranged.overlaps);
+
+    Pool pool(mesh);
+    SegmentBuffer buf;
+    // Crossing points are vertices like the input's (Triangle's rule: the
+    // segments' pieces end there, and refinement protects them as corners).
+    TriangleId hint = no_triangle;
+    for (std::uint32_t i = 0; i < mesh.triangle_end() && hint == no_triangle; ++i)
+        if (mesh.triangle(TriangleId{i}).live()) hint = TriangleId{i};
+    for (const ArrangementReport::Crossing& c : arranged.crossings) {
+        const InsertResult r =
+            insert_point(pool, points[c.vertex], VertexKind::input, hint, buf.insert);
+        if (r.status != InsertStatus::inserted || index(r.vertex) != c.vertex)
+            throw GeometryError(
+                "the crossing point of segments " + std::to_string(c.other_segment) + " and " +
+                std::to_string(c.segment) + " rounds to a point outside the input's convex hull");
+        hint = buf.insert.created.front();
+        NewSegmentVertex nv;
+        nv.vertex = r.vertex;
+        nv.segment = c.segment;
+        nv.t = parameter(pslg, kept, c.segment, points[c.vertex]);
+        nv.other_segment = c.other_segment;
+        nv.other_t = parameter(pslg, kept, c.other_segment, points[c.vertex]);
+        report.new_vertices.push_back(nv);
+    }
+
+    track_corners(mesh, buf);
+    mesh.subsegments().reserve(report.pieces.size() + report.pieces.size() / 4);
+    for (std::uint32_t k = 0; k < report.pieces.size(); ++k) {
+        const SegmentPiece& piece = report.pieces[k];
+        const SubsegmentInfo info{piece.marker, k};
+        hint = insert_segment(pool, VertexId{piece.a}, VertexId{piece.b}, info, hint, buf);
+        // The pieces neither cross nor pass through vertices, so insertion
+        // reports nothing, unless a vertex swallowed by a retriangulated
+        // strip was put back exactly on a piece (exact, so still reported
+        // here) or an earlier piece's constraint must be split.
+        for (const SegmentEvent& e : buf.events) {
+            const std::uint32_t segment = e.segment == SubsegmentInfo::no_segment ? k : e.segment;
+            if (e.kind == SegmentEvent::Kind::through_vertex) {
+                report.segments_through_vertices.emplace_back(report.pieces[segment].segment,
+                                                              e.vertex);
+                continue;
             }
+            NewSegmentVertex nv;
+            nv.vertex = e.vertex;
+            nv.segment = piece.segment;
+            nv.t = parameter(pslg, kept, piece.segment, mesh.point(e.vertex));
+            if (e.crossed.segment != SubsegmentInfo::no_segment) {
+                nv.other_segment = report.pieces[e.crossed.segment].segment;
+                nv.other_t = parameter(pslg, kept, nv.other_segment, mesh.point(e.vertex));
+            }
+            report.new_vertices.push_back(nv);
         }
     }
     return mesh;

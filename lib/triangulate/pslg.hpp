@@ -13,6 +13,7 @@
 
 #include "geometry/point.hpp"
 #include "mesh/ids.hpp"
+#include "triangulate/arrangement.hpp"
 
 namespace gpdr::triangulate {
 
@@ -53,14 +54,22 @@ struct CdtReport {
     std::vector<std::uint32_t> zero_length_segments;
     // (segment, the earlier segment with the same two ends): skipped.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> duplicate_segments;
-    // Vertices created where segments cross, in creation order.
+    // Vertices created where segments cross (input vertices from then on),
+    // in creation order.
     std::vector<NewSegmentVertex> new_vertices;
     // (segment, vertex): a vertex lies in the segment's interior; the segment
     // is split there.
     std::vector<std::pair<std::uint32_t, mesh::VertexId>> segments_through_vertices;
 
+    // (segment, earlier segment): collinear segments that share a stretch,
+    // kept once.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> overlapping_segments;
     // Whether segment s was skipped (zero length or duplicate).
     std::vector<bool> skipped;
+    // The segments cut at crossings and at vertices on them
+    // (arrangement.hpp), in input order; SubsegmentInfo::segment of a
+    // subsegment is an index into this list.
+    std::vector<SegmentPiece> pieces;
 };
 
 // The PSLG a .poly file describes (its vertices, segments with markers,

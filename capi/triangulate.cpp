@@ -139,6 +139,9 @@ int guarded(const char* switches, triangulateio* in, triangulateio* out, triangu
         // The input is the caller's arrays, not a file: the reason alone.
         last_error = e.reason();
         status = 1;
+    } catch (const InternalError& e) {
+        last_error = std::string(e.what()) + " (an internal error in gpdr: please report it)";
+        status = 3;
     } catch (const Error& e) {
         last_error = e.what();
         status = 1;

@@ -117,7 +117,8 @@ std::string help_text() {
            "\n"
            "Messages: \"Wrote FILE\" lines and statistics on standard output; warnings\n"
            "and errors as \"gpdr: ...\" on standard error.  Exit status: 0 on success (and\n"
-           "for -h and for no input), 1 on any error or a failed -C check.\n"
+           "for -h and for no input), 1 on any error or a failed -C check, 2 out of\n"
+           "memory, 3 an internal error (a bug in gpdr), 128+n killed by signal n.\n"
            "See gpdr(1) for the file formats and the few deliberate differences from\n"
            "Triangle.\n";
 }

@@ -1,6 +1,7 @@
 // gpdr's entry point: argv -> Options -> gpdr::run_job() -> messages and an
 // exit status.  No geometry here; every error the library reports arrives as
-// an exception and leaves as "gpdr: <message>" on stderr with exit status 1.
+// an exception and leaves as "gpdr: <message>" on stderr with the exit status
+// its kind calls for (exit_error and the others below).
 //
 // This file is also what a user links with libgpdr.a and their own
 // triunsuitable() object to build a custom gpdr (see apps/CMakeLists.txt).
@@ -47,12 +48,17 @@ int run(int argc, const char* const* argv) {
     return gpdr::app::report_result(line.options, result, stdout, stderr);
 }
 
-// Prints "gpdr: <what><note>" on stderr; two parts so that reporting an
-// internal error needs no allocation.
-int fail(std::string_view what, std::string_view note = {}) {
+// Exit statuses (man/gpdr.1, EXIT STATUS; README's table).
+constexpr int exit_error = 1;           // the input, the switches, a file
+constexpr int exit_out_of_memory = 2;   // as libtriangle's triangulate() returns
+constexpr int exit_internal_error = 3;  // a bug in gpdr
+
+// Prints "gpdr: <what><note>" on stderr and returns `status`; two parts so
+// that reporting an internal error needs no allocation.
+int fail(int status, std::string_view what, std::string_view note = {}) {
     std::fflush(stdout);
     fmt::print(stderr, "gpdr: {}{}\n", what, note);
-    return 1;
+    return status;
 }
 
 constexpr std::string_view please_report =
@@ -63,13 +69,15 @@ constexpr std::string_view please_report =
 int main(int argc, char** argv) {
     try {
         return run(argc, argv);
+    } catch (const gpdr::InternalError& e) {
+        return fail(exit_internal_error, e.what(), please_report);
     } catch (const gpdr::Error& e) {
-        return fail(e.what());
+        return fail(exit_error, e.what());
     } catch (const std::bad_alloc&) {
-        return fail("out of memory");
+        return fail(exit_out_of_memory, "out of memory");
     } catch (const std::exception& e) {
-        return fail(e.what(), please_report);
+        return fail(exit_internal_error, e.what(), please_report);
     } catch (...) {
-        return fail("unknown exception", please_report);
+        return fail(exit_internal_error, "unknown exception", please_report);
     }
 }

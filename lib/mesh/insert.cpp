@@ -149,7 +149,7 @@ InsertResult commit_cavity(Pool& pool, VertexId v, const LocateResult& where, In
         clear_marks(mesh, cavity);
         boundary.clear();
         cavity.clear();
-        throw Error(
+        throw InternalError(
             "mesh: Bowyer-Watson cavity is not simply connected (the mesh is not Delaunay near the "
             "point)");
     }

@@ -19,7 +19,8 @@ Pool::~Pool() {
 }
 
 void Pool::destroyed_twice(TriangleId t) {
-    throw Error("mesh: triangle " + std::to_string(index(t)) + " destroyed while already dead");
+    throw InternalError("mesh: triangle " + std::to_string(index(t)) +
+                        " destroyed while already dead");
 }
 
 void Pool::refill() {

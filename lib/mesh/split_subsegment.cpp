@@ -199,7 +199,7 @@ InsertResult split_subsegment(Pool& pool, EdgeRef s, const Point& asked, VertexK
         if (a == Attempt::done) break;
         if (a == Attempt::broken || banned.size() > 64) {
             restore();
-            throw Error(
+            throw InternalError(
                 "mesh: the cavity of a subsegment split is not a disk (the mesh is broken near " +
                 std::to_string(index(x)) + "-" + std::to_string(index(y)) + ")");
         }
@@ -218,7 +218,7 @@ InsertResult split_subsegment(Pool& pool, EdgeRef s, const Point& asked, VertexK
     }
     if (first == m || !sees_x) {
         restore();
-        throw Error("mesh: a subsegment split would remove an end of the subsegment");
+        throw InternalError("mesh: a subsegment split would remove an end of the subsegment");
     }
     const bool open = across.is_none();  // the hull edge x -> y is on the boundary and stays out
     const std::size_t count = open ? m - 1 : m;

@@ -349,9 +349,10 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q, PoorSlot at) {
     }
     const Point p = run_.strategy().place(t, scratch_);
     if (settings_.checked && !admissible_point(t, p))
-        throw Error(std::string("refine: placement strategy '") + run_.strategy().name() +
-                    "' returned a point outside the selection disk (or, where that is empty, the "
-                    "circumdisk)");
+        throw InternalError(
+            std::string("refine: placement strategy '") + run_.strategy().name() +
+            "' returned a point outside the selection disk (or, where that is empty, the "
+            "circumdisk)");
     if (!finite(p)) {
         give_up(q, reason_precision);
         return;
@@ -471,8 +472,8 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q, PoorSlot at) {
     const VertexId v = pool_.new_vertex(p, mesh::VertexKind::free);
     const mesh::InsertResult result = mesh::commit_cavity(pool_, v, where, buffer_);
     if (result.status != mesh::InsertStatus::inserted)
-        throw Error("refine: a located Steiner point was refused by insertion (vertex " +
-                    std::to_string(mesh::index(v)) + ")");
+        throw InternalError("refine: a located Steiner point was refused by insertion (vertex " +
+                            std::to_string(mesh::index(v)) + ")");
     count_steiner_point();
     ++report_.steiner_points;
     if (settings_.record_new_vertices) {

@@ -42,7 +42,8 @@ public:
             std::clamp(2.0 * static_cast<double>(pieces.size() + vertices.size()), 1.0, 4.0e6);
         const double width = hi_.x - lo_.x, height = hi_.y - lo_.y;
         if (width > 0 && height > 0) {
-            columns_ = static_cast<int>(std::clamp(std::sqrt(target * width / height), 1.0, target));
+            columns_ =
+                static_cast<int>(std::clamp(std::sqrt(target * width / height), 1.0, target));
             rows_ = static_cast<int>(std::clamp(target / columns_, 1.0, target));
         } else if (width > 0) {
             columns_ = static_cast<int>(target);
@@ -281,10 +282,10 @@ private:
     // distance of the crossing point (see arrangement.hpp), else a new one.
     std::uint32_t crossing_vertex(std::uint32_t i, std::uint32_t j) {
         const SegmentPiece &s = pieces_[i], &t = pieces_[j];
-        const Point p = geometry::crossing_point(points_[s.a], points_[s.b], points_[t.a],
-                                                 points_[t.b]);
+        const Point p =
+            geometry::crossing_point(points_[s.a], points_[s.b], points_[t.a], points_[t.b]);
         const double length = std::sqrt(std::max(squared_distance(points_[s.a], points_[s.b]),
-                                                  squared_distance(points_[t.a], points_[t.b])));
+                                                 squared_distance(points_[t.a], points_[t.b])));
         const double near = rounding_distance(length, p);
         std::uint32_t best = 0;
         double best_distance = near * near;
@@ -309,7 +310,8 @@ private:
         points_.push_back(p);
         vertices_.push_back(v);
         at_.emplace(p, v);
-        report_.crossings.push_back({v, std::max(s.segment, t.segment), std::min(s.segment, t.segment)});
+        report_.crossings.push_back(
+            {v, std::max(s.segment, t.segment), std::min(s.segment, t.segment)});
         return v;
     }
 
@@ -348,9 +350,8 @@ std::vector<SegmentPiece> apply_cuts(
                         : std::pair{(p.y - a.y) * dy, (p.x - a.x) * dx};
         };
         order = it->second;
-        std::sort(order.begin(), order.end(), [&](std::uint32_t u, std::uint32_t v) {
-            return position(u) < position(v);
-        });
+        std::sort(order.begin(), order.end(),
+                  [&](std::uint32_t u, std::uint32_t v) { return position(u) < position(v); });
         std::uint32_t from = s.a;
         order.push_back(s.b);
         for (const std::uint32_t v : order) {

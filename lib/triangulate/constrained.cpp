@@ -56,11 +56,13 @@ TriangleId find_start(const Mesh& mesh, VertexId v, TriangleId hint, SegmentBuff
         hint = no_triangle;
         for (std::uint32_t i = 0; i < mesh.triangle_end() && hint == no_triangle; ++i)
             if (mesh.triangle(TriangleId{i}).live()) hint = TriangleId{i};
-        if (hint == no_triangle) throw Error("segment insertion: the mesh has no triangles");
+        if (hint == no_triangle)
+            throw InternalError("segment insertion: the mesh has no triangles");
     }
     const LocateResult r = locate(mesh, mesh.point(v), hint, buf.insert.random_state);
     if (r.where != Location::on_vertex || mesh.triangle(r.triangle).v[r.index] != v)
-        throw Error("segment insertion: vertex " + vertex_name(v) + " is not in the triangulation");
+        throw InternalError("segment insertion: vertex " + vertex_name(v) +
+                            " is not in the triangulation");
     return r.triangle;
 }
 
@@ -262,7 +264,7 @@ TriangleId retriangulate(Pool& pool, VertexId a, VertexId end, const SubsegmentI
     for (VertexId v : buf.inner) {
         const InsertResult r = insert_vertex(pool, v, top_left.triangle(), buf.insert);
         if (r.status != InsertStatus::inserted)
-            throw Error("segment insertion: could not put back vertex " + vertex_name(v));
+            throw InternalError("segment insertion: could not put back vertex " + vertex_name(v));
         for (TriangleId c : buf.insert.created) note_corners(mesh, buf, c);
     }
     return find_start(mesh, end, top_left.triangle(), buf);
@@ -311,8 +313,8 @@ TriangleId insert_piece(Pool& pool, VertexId a, VertexId b, const SubsegmentInfo
     std::uint64_t steps_left = 8ull * mesh.vertex_end() + 1024;
     while (!targets.empty()) {
         if (--steps_left == 0)
-            throw Error("segment insertion from vertex " + vertex_name(a) + " to " +
-                        vertex_name(b) + " does not terminate");
+            throw InternalError("segment insertion from vertex " + vertex_name(a) + " to " +
+                                vertex_name(b) + " does not terminate");
         const VertexId target = targets.back();
         const Step step = find_wedge(mesh, t, current, target);
         if (step.kind != Step::Kind::cross) {
@@ -417,7 +419,7 @@ TriangleId insert_segment(Pool& pool, VertexId a, VertexId b, SubsegmentInfo inf
     Mesh& mesh = pool.mesh();
     buf.events.clear();
     buf.pending.clear();
-    if (a == b) throw Error("segment insertion: both ends are vertex " + vertex_name(a));
+    if (a == b) throw InternalError("segment insertion: both ends are vertex " + vertex_name(a));
     TriangleId t = insert_piece(pool, a, b, info, find_start(mesh, a, hint, buf), buf, true);
     // Subsegments that hung inside a retriangulated strip (see append()).
     while (!buf.pending.empty()) {

@@ -152,7 +152,7 @@ void create_triangles(const TriangleMeshInput& in, Pool& pool, const Namer& name
                                             name.triangle(id, c[0], c[1], c[2])));
         const TriangleId t = pool.create(VertexId{c[0]}, VertexId{c[1]}, VertexId{c[2]});
         if (index(t) != id)
-            throw Error("from_triangles: the pool did not hand out triangle ids in order");
+            throw InternalError("from_triangles: the pool did not hand out triangle ids in order");
         const Point* p[3] = {&a, &b, &d};
         for (int k = 0; k < 3; ++k) {
             used[c[k]] = 1;
@@ -284,6 +284,8 @@ void insert_missing(const TriangleMeshInput& in, Pool& pool, const std::vector<s
             hint = insert_segment(pool, VertexId{a}, VertexId{b}, info, start, buffer);
         } catch (const GeometryError&) {
             throw;
+        } catch (const InternalError&) {
+            throw;
         } catch (const Error& e) {
             throw GeometryError(what + " and cannot be inserted: " + e.what());
         }
@@ -337,13 +339,13 @@ void spread_attributes(const Mesh& mesh, std::uint32_t original, std::uint32_t c
 mesh::Mesh from_triangles(const TriangleMeshInput& in, TriangleMeshReport& report) {
     report = TriangleMeshReport{};
     if (in.corners_per_triangle < 3 || in.corners.size() % in.corners_per_triangle != 0)
-        throw Error("from_triangles: the corner list does not hold whole triangles");
+        throw InternalError("from_triangles: the corner list does not hold whole triangles");
     const std::size_t n = in.points.size();
     const std::size_t count = in.corners.size() / in.corners_per_triangle;
     if (in.attributes.size() != count * in.attribute_count)
-        throw Error("from_triangles: the attribute list does not match the triangles");
+        throw InternalError("from_triangles: the attribute list does not match the triangles");
     if (!in.segment_markers.empty() && in.segment_markers.size() * 2 != in.segments.size())
-        throw Error("from_triangles: the segment markers do not match the segments");
+        throw InternalError("from_triangles: the segment markers do not match the segments");
     if (n >= index(ghost_vertex)) throw GeometryError(fmt::format("too many vertices ({})", n));
     if (count >= max_triangles) throw GeometryError(fmt::format("too many triangles ({})", count));
     if (count == 0) throw GeometryError("the mesh has no triangles");

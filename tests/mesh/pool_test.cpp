@@ -164,7 +164,8 @@ TEST_CASE("destroying a dead triangle is refused", "[mesh][pool]") {
     Pool pool(mesh);
     const TriangleId t = pool.create(VertexId{0}, VertexId{1}, VertexId{2});
     pool.destroy(t);
-    CHECK_THROWS_AS(pool.destroy(t), gpdr::Error);
+    // A bug in gpdr, not the input's fault: its own error type.
+    CHECK_THROWS_AS(pool.destroy(t), gpdr::InternalError);
     // The free list is intact: the slot comes back once.
     CHECK(pool.create(VertexId{0}, VertexId{1}, VertexId{2}) == t);
     CHECK(pool.create(VertexId{0}, VertexId{1}, VertexId{2}) != t);

@@ -51,8 +51,9 @@ void require_clean(const Arranged& r) {
         for (std::size_t v = 0; v < p.size(); ++v) {
             if (v == r.pieces[i].a || v == r.pieces[i].b || p[v] == a || p[v] == b) continue;
             if (orient2d(a, b, p[v]) != 0) continue;
-            const bool between = a.x != b.x ? (std::min(a.x, b.x) < p[v].x && p[v].x < std::max(a.x, b.x))
-                                            : (std::min(a.y, b.y) < p[v].y && p[v].y < std::max(a.y, b.y));
+            const bool between = a.x != b.x
+                                     ? (std::min(a.x, b.x) < p[v].x && p[v].x < std::max(a.x, b.x))
+                                     : (std::min(a.y, b.y) < p[v].y && p[v].y < std::max(a.y, b.y));
             INFO("vertex " << v << " on piece " << i);
             REQUIRE_FALSE(between);
         }
@@ -95,9 +96,9 @@ TEST_CASE("arrangement: a proper crossing cuts both segments", "[arrangement]") 
 
 TEST_CASE("arrangement: a vertex on a segment cuts it", "[arrangement]") {
     // The issue's a.poly: vertex 0 (0, 2) lies on segment 1, (-1, 3)-(5, -3).
-    const Arranged r = arrange({{0, 2}, {0, 3}, {0, 1}, {4, 3}, {-1, -1}, {-1, 3}, {5, -3},
-                                {-1, 0}, {5, 0}},
-                               {{4, 1}, {5, 6}, {7, 8}, {3, 2}});
+    const Arranged r =
+        arrange({{0, 2}, {0, 3}, {0, 1}, {4, 3}, {-1, -1}, {-1, 3}, {5, -3}, {-1, 0}, {5, 0}},
+                {{4, 1}, {5, 6}, {7, 8}, {3, 2}});
     require_clean(r);
     REQUIRE(r.report.through_vertices.size() == 1);
     REQUIRE(r.report.through_vertices[0] == std::pair<std::uint32_t, std::uint32_t>{1, 0});
@@ -108,8 +109,8 @@ TEST_CASE("arrangement: a vertex on a segment cuts it", "[arrangement]") {
 
 TEST_CASE("arrangement: collinear overlaps are kept once", "[arrangement]") {
     // 0-2 and 1-3 on one line overlap along 1-2; 4-5 lies inside 0-2.
-    const Arranged r = arrange({{0, 0}, {1, 0}, {2, 0}, {3, 0}, {0.25, 0}, {0.5, 0}},
-                               {{0, 2}, {1, 3}, {4, 5}});
+    const Arranged r =
+        arrange({{0, 0}, {1, 0}, {2, 0}, {3, 0}, {0.25, 0}, {0.5, 0}}, {{0, 2}, {1, 3}, {4, 5}});
     require_clean(r);
     REQUIRE(r.pieces.size() == 5);  // 0-4, 4-5, 5-1, 1-2, 2-3
     REQUIRE(r.report.overlaps.size() == 2);
@@ -130,8 +131,12 @@ TEST_CASE("arrangement: three segments through one inexact point meet at one ver
           "[arrangement]") {
     // Concurrent lines whose common point is not representable.
     const double o = 1e6;
-    const Arranged r = arrange({{o + 0.1, o + 0.3}, {o + 0.7, o + 0.9}, {o + 0.1, o + 0.9},
-                                {o + 0.7, o + 0.3}, {o + 0.4, o + 0.2}, {o + 0.4, o + 1.0}},
+    const Arranged r = arrange({{o + 0.1, o + 0.3},
+                                {o + 0.7, o + 0.9},
+                                {o + 0.1, o + 0.9},
+                                {o + 0.7, o + 0.3},
+                                {o + 0.4, o + 0.2},
+                                {o + 0.4, o + 1.0}},
                                {{0, 1}, {2, 3}, {4, 5}});
     require_clean(r);
     REQUIRE(r.points.size() <= 7 + 2);

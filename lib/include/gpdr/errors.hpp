@@ -1,7 +1,8 @@
 #pragma once
 // Error types thrown by libgpdr.  The library never prints and never exits:
 // it throws one of these, and apps/gpdr turns it into "gpdr: <what()>" on
-// stderr and exit status 1.
+// stderr and exit status 1 (3 for an InternalError: see man/gpdr.1, EXIT
+// STATUS).
 
 #include <cstddef>
 #include <stdexcept>
@@ -58,6 +59,13 @@ public:
 // Invalid input geometry that is not tied to one line of a file (all points
 // collinear, fewer than three vertices, ...).
 class GeometryError : public Error {
+public:
+    using Error::Error;
+};
+
+// A broken invariant inside gpdr: a bug, never a problem with the input.
+// The program and the C API say so and ask for a report with the input.
+class InternalError : public Error {
 public:
     using Error::Error;
 };

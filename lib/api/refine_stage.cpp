@@ -114,10 +114,13 @@ void warn_after_refinement(const refine::RefineReport& r, const WarningSink& war
                         r.steiner_points, r.left_budget)});
     if (r.stopped == Stop::safety_limit)
         warn(Warning{"", 0,
-                     fmt::format("refinement stopped after {} Steiner points because new points no "
-                                 "longer made progress (the bounds may be out of reach); the mesh "
-                                 "is valid but {} triangles still fail them",
-                                 r.steiner_points, r.left_budget)});
+                     fmt::format("refinement stopped at its safety limit of {} Steiner points "
+                                 "(2^20, plus 64 per triangle of the input and per triangle the "
+                                 "area bounds call for), which a refinement that ends never "
+                                 "reaches: the angle bound is out of reach for this input (above "
+                                 "about 34 degrees, or next to small input angles); the mesh is "
+                                 "valid but {} triangles still fail the bounds",
+                                 r.safety_limit, r.left_budget)});
     if (r.left_precision)
         warn(Warning{"", 0,
                      fmt::format("{} triangles were left as they are because refining them further "

@@ -60,7 +60,10 @@ void merge(refine::RefineReport& into, refine::RefineReport& from) {
     into.steiner_points += from.steiner_points;
     into.segment_splits += from.segment_splits;
     into.triangles_created += from.triangles_created;
-    if (into.stopped == refine::RefineReport::Stop::none) into.stopped = from.stopped;
+    if (into.stopped == refine::RefineReport::Stop::none) {
+        into.stopped = from.stopped;
+        into.safety_limit = from.safety_limit;
+    }
     into.new_vertices.insert(into.new_vertices.end(), from.new_vertices.begin(),
                              from.new_vertices.end());
     from.new_vertices = {};

@@ -239,6 +239,7 @@ bool LeafRefiner::budget_left() {
     }
     if (used >= run_.safety_limit()) {
         report_.stopped = RefineReport::Stop::safety_limit;
+        report_.safety_limit = run_.safety_limit();
         return false;
     }
     return true;

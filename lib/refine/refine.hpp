@@ -123,6 +123,7 @@ struct RefineReport {
     std::uint64_t segment_splits = 0;  // of those, on subsegments
     std::uint64_t triangles_created = 0;
     Stop stopped = Stop::none;
+    std::uint64_t safety_limit = 0;  // the limit that stopped it, when stopped == safety_limit
 
     // Poor triangles left at the end (refine_mesh counts them in a final
     // pass), by reason.  A triangle given up for several reasons is counted

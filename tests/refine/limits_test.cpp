@@ -157,6 +157,7 @@ TEST_CASE("an unreachable angle bound stops with a valid mesh", "[refine][limits
     CHECK(problems.empty());
     CHECK(report.stopped == RefineReport::Stop::safety_limit);
     CHECK(report.steiner_points == 20000);
+    CHECK(report.safety_limit == 20000);  // the warning names the limit that stopped it
     CHECK(report.left_budget + report.left_precision > 0);
 }
 

@@ -7,6 +7,7 @@
 #include <gpdr/errors.hpp>
 
 #include "geometry/predicates.hpp"
+#include "mesh/cavity.hpp"
 
 namespace gpdr::mesh {
 
@@ -48,33 +49,10 @@ void clear_marks(Mesh& mesh, const std::vector<TriangleId>& cavity) {
 
 }  // namespace
 
-// Step 3: breadth-first search from the seed, `cavity` doubling as queue.
+// Step 3 (cavity.hpp).
 std::size_t find_cavity(Mesh& mesh, const Point& p, TriangleId seed, InsertBuffer& buf) {
-    auto& cavity = buf.killed;
-    cavity.clear();
-    mesh.triangle(seed).flags |= Triangle::mark_bit;
-    cavity.push_back(seed);
-    std::size_t boundary_edges = 0;
-    for (std::size_t i = 0; i < cavity.size(); ++i) {
-        const Triangle& t = mesh.triangle(cavity[i]);
-        for (int k = 0; k < 3; ++k) {
-            const EdgeRef across = t.n[k];
-            if (across.is_none() || t.is_subsegment(k)) {
-                ++boundary_edges;
-                continue;
-            }
-            Triangle& u = mesh.triangle(across.triangle());
-            if (u.marked()) continue;
-            if (in_circumcircle(mesh, u, p)) {
-                u.flags |= Triangle::mark_bit;
-                cavity.push_back(across.triangle());
-            } else {
-                ++boundary_edges;
-            }
-        }
-    }
-    buf.boundary_edges = boundary_edges;
-    return boundary_edges;
+    buf.boundary_edges = search_cavity(mesh, p, {&seed, 1}, buf, [](TriangleId) { return true; });
+    return buf.boundary_edges;
 }
 
 void save_if_tagged(Triangle& t, InsertBuffer& buf) {
@@ -106,44 +84,22 @@ InsertResult commit_cavity(Pool& pool, VertexId v, const LocateResult& where, In
     const std::size_t boundary_edges = buf.boundary_edges;
     const TriangleId seed = where.triangle;
 
-    auto is_boundary = [&](const Triangle& t, int k) {
-        const EdgeRef across = t.n[k];
-        return across.is_none() || t.is_subsegment(k) || !mesh.triangle(across.triangle()).marked();
-    };
-
-    // Step 4a: the boundary in order.  Start at any boundary edge; the next
-    // one begins at the current one's destination: pivot around it through
-    // cavity triangles until an edge leaves the cavity.
-    EdgeRef start = EdgeRef::none();
-    for (TriangleId id : cavity) {
-        const Triangle& t = mesh.triangle(id);
-        for (int k = 0; k < 3 && start.is_none(); ++k)
-            if (is_boundary(t, k)) start = EdgeRef(id, k);
-        if (!start.is_none()) break;
-    }
     // A hull edge containing p stays out of the fan (only without ghosts).
     EdgeRef skip = EdgeRef::none();
     if (where.where == Location::on_edge && mesh.triangle(seed).n[where.index].is_none())
         skip = EdgeRef(seed, where.index);
     std::size_t skip_at = 0;
 
-    EdgeRef e = start;
-    do {
+    // Step 4a: the boundary in order (cavity.hpp).
+    const bool disk = walk_cavity_boundary(mesh, buf, boundary_edges, [&](EdgeRef e) {
         const Triangle& t = mesh.triangle(e.triangle());
         if (e == skip) skip_at = boundary.size();
         boundary.push_back(
             {t.v[next3(e.edge())], t.v[prev3(e.edge())], t.n[e.edge()], t.is_subsegment(e.edge())});
-        TriangleId ct = e.triangle();
-        int j = next3(e.edge());
-        while (!is_boundary(mesh.triangle(ct), j)) {
-            const EdgeRef across = mesh.triangle(ct).n[j];
-            ct = across.triangle();
-            j = next3(across.edge());
-        }
-        e = EdgeRef(ct, j);
-    } while (e != start && boundary.size() <= boundary_edges);
+        return true;
+    });
 
-    if (boundary.size() != boundary_edges) {
+    if (!disk) {
         // The cavity is not a disk: the mesh was not (constrained) Delaunay
         // around p.  Nothing has been changed yet.
         clear_marks(mesh, cavity);

@@ -12,6 +12,7 @@
 
 #include "geometry/constructions.hpp"
 #include "geometry/predicates.hpp"
+#include "mesh/cavity.hpp"
 #include "mesh/flip.hpp"
 
 namespace gpdr::mesh {
@@ -83,70 +84,35 @@ void lawson_flips(Mesh& mesh, InsertBuffer& buf) {
 // see p has been added to `banned`.
 Attempt grow_cavity(Mesh& mesh, EdgeRef s, EdgeRef across, const Point& p, InsertBuffer& buf,
                     std::vector<TriangleId>& banned) {
-    auto& cavity = buf.killed;
     auto& boundary = buf.boundary;
-    cavity.clear();
     boundary.clear();
     const TriangleId t1 = s.triangle();
     const TriangleId u = across.is_none() ? no_triangle : across.triangle();
-    mesh.triangle(t1).flags |= Triangle::mark_bit;
-    cavity.push_back(t1);
-    if (u != no_triangle) {
-        mesh.triangle(u).flags |= Triangle::mark_bit;
-        cavity.push_back(u);
-    }
-    std::size_t boundary_edges = 0;
-    for (std::size_t i = 0; i < cavity.size(); ++i) {
-        const Triangle& t = mesh.triangle(cavity[i]);
-        for (int k = 0; k < 3; ++k) {
-            const EdgeRef next = t.n[k];
-            if (next.is_none() || t.is_subsegment(k)) {
-                ++boundary_edges;
-                continue;
-            }
-            Triangle& v = mesh.triangle(next.triangle());
-            if (v.marked()) continue;
-            if (std::find(banned.begin(), banned.end(), next.triangle()) == banned.end() &&
-                in_circumcircle(mesh, v, p)) {
-                v.flags |= Triangle::mark_bit;
-                cavity.push_back(next.triangle());
-            } else {
-                ++boundary_edges;
-            }
-        }
-    }
-    auto is_boundary = [&](const Triangle& t, int k) {
-        const EdgeRef next = t.n[k];
-        return next.is_none() || t.is_subsegment(k) || !mesh.triangle(next.triangle()).marked();
-    };
-
-    // The walk starts at any boundary edge and meets every one in order.
-    EdgeRef e = EdgeRef::none();
-    for (TriangleId id : cavity) {
-        for (int k = 0; k < 3 && e.is_none(); ++k)
-            if (is_boundary(mesh.triangle(id), k)) e = EdgeRef(id, k);
-        if (!e.is_none()) break;
-    }
-    const EdgeRef first = e;
-    do {
+    const TriangleId seeds[2] = {t1, u};
+    const std::size_t boundary_edges = search_cavity(
+        mesh, p, {seeds, u == no_triangle ? 1u : 2u}, buf,
+        [&](TriangleId id) { return std::find(banned.begin(), banned.end(), id) == banned.end(); });
+    // Every boundary edge but the split one must see p on its left: p may
+    // be a rounded point, so a triangle that would fan the wrong way is
+    // banned and the search retried.
+    Attempt outcome = Attempt::done;
+    const bool disk = walk_cavity_boundary(mesh, buf, boundary_edges, [&](EdgeRef e) {
         const Triangle& t = mesh.triangle(e.triangle());
         const VertexId from = t.v[next3(e.edge())], to = t.v[prev3(e.edge())];
         if (e != s && orient2d(mesh.point(from), mesh.point(to), p) <= 0) {
-            if (e.triangle() == t1 || e.triangle() == u) return Attempt::broken;
-            banned.push_back(e.triangle());
-            return Attempt::retry;
+            if (e.triangle() == t1 || e.triangle() == u) {
+                outcome = Attempt::broken;
+            } else {
+                banned.push_back(e.triangle());
+                outcome = Attempt::retry;
+            }
+            return false;
         }
         boundary.push_back({from, to, t.n[e.edge()], t.is_subsegment(e.edge())});
-        TriangleId ct = e.triangle();
-        int j = next3(e.edge());
-        while (!is_boundary(mesh.triangle(ct), j)) {
-            const EdgeRef next = mesh.triangle(ct).n[j];
-            ct = next.triangle();
-            j = next3(next.edge());
-        }
-        e = EdgeRef(ct, j);
-    } while (e != first && boundary.size() <= boundary_edges);
-    return boundary.size() == boundary_edges ? Attempt::done : Attempt::broken;
+        return true;
+    });
+    if (outcome != Attempt::done) return outcome;
+    return disk ? Attempt::done : Attempt::broken;
 }
 
 bool can_split_at(const Mesh& mesh, EdgeRef s, const Point& p) {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <exception>
 #include <limits>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -342,11 +343,18 @@ bool LeafRefiner::split_subsegment(Leaf& leaf, EdgeRef e) {
     return true;
 }
 
-void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q, PoorSlot at) {
-    const PoorTriangle t = describe_poor_triangle(mesh_, q.id, quality_);
+// refine_triangle's steps.  Each either finishes with the triangle (gives
+// it up, hands it off, splits subsegments instead, or requeues it) and
+// returns nothing, or returns what the next step needs.
+
+// The Steiner point of t from the placement strategy, or nothing when t is
+// too small for double precision (given up) or the point belongs to another
+// leaf (handed off).
+std::optional<Point> LeafRefiner::choose_point(Leaf& leaf, QueuedTriangle q,
+                                               const PoorTriangle& t) {
     if (t.shortest_length * t.shortest_length < run_.tiny_length_squared()) {
         give_up(q, reason_precision);
-        return;
+        return std::nullopt;
     }
     const Point p = run_.strategy().place(t, scratch_);
     if (settings_.checked && !admissible_point(t, p))
@@ -356,74 +364,80 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q, PoorSlot at) {
             "circumdisk)");
     if (!finite(p)) {
         give_up(q, reason_precision);
-        return;
+        return std::nullopt;
     }
     if (!leaf.owns(p)) {
         leaf.handed_off_triangles.push_back(q);
+        return std::nullopt;
+    }
+    return p;
+}
+
+bool LeafRefiner::alive(QueuedTriangle q) const {
+    const mesh::Triangle& r = mesh_.triangle(q.id);
+    return r.load_generation() == q.generation && r.live();
+}
+
+// The subsegments queued in t's way split, then t goes back to the tail of
+// its bin if it survived (Triangle's order).  When one of them belongs to
+// another leaf (its split point lies outside), t goes with it instead of
+// back into this leaf, which would take it again at once (parallel layer;
+// never without a hook).  When none could be split (too short for double
+// precision, or a degenerate neighbourhood) and no limit stopped
+// refinement, nothing changed and nothing will: t is given up rather than
+// queued again.
+void LeafRefiner::split_queued_then_requeue(Leaf& leaf, QueuedTriangle q, PoorSlot at) {
+    const std::size_t handed = leaf.handed_off_subsegments.size();
+    const std::uint64_t splits = split_queued_subsegments(leaf);
+    if (!alive(q)) return;
+    if (leaf.handed_off_subsegments.size() != handed)
+        leaf.handed_off_triangles.push_back(q);
+    else if (splits == 0 && report_.stopped == RefineReport::Stop::none)
+        give_up(q, reason_precision);
+    else
+        leaf.push_poor(q, at);  // (a limit stopped it: counted as left by the budget)
+}
+
+// Subsegment e is split instead of t (p encroaches it or lies on it); t is
+// given up when -Y/-YY forbid that.
+void LeafRefiner::split_instead(Leaf& leaf, QueuedTriangle q, PoorSlot at, EdgeRef e) {
+    if (!may_split(e)) {
+        give_up(q, reason_no_split);
         return;
     }
-    auto alive = [&] {
-        const mesh::Triangle& r = mesh_.triangle(q.id);
-        return r.load_generation() == q.generation && r.live();
-    };
-    // Back to the tail of its bin (Triangle's order).
-    auto requeue_if_alive = [&] {
-        if (alive()) leaf.push_poor(q, at);
-    };
-    // The subsegments in t's way split, t goes back to its bin if it
-    // survived.  When one of them belongs to another leaf (its split point
-    // lies outside), t goes with it instead of back into this leaf, which
-    // would take it again at once (parallel layer; never without a hook).
-    // When none could be split (too short for double precision, or a
-    // degenerate neighbourhood) and no limit stopped refinement, nothing
-    // changed and nothing will: t is given up rather than queued again.
-    auto split_queued_subsegments_then_requeue = [&] {
-        const std::size_t handed = leaf.handed_off_subsegments.size();
-        const std::uint64_t splits = split_queued_subsegments(leaf);
-        if (!alive()) return;
-        if (leaf.handed_off_subsegments.size() != handed)
-            leaf.handed_off_triangles.push_back(q);
-        else if (splits == 0 && report_.stopped == RefineReport::Stop::none)
-            give_up(q, reason_precision);
-        else
-            leaf.push_poor(q, at);  // (a limit stopped it: counted as left by the budget)
-    };
-    auto split_instead = [&](EdgeRef e) {
-        leaf.push_subsegment({e, mesh_.triangle(e.triangle()).generation, true});
-        split_queued_subsegments_then_requeue();
-    };
+    leaf.push_subsegment({e, mesh_.triangle(e.triangle()).generation, true});
+    split_queued_then_requeue(leaf, q, at);
+}
 
-    // Where p lies, seen from t without crossing subsegments.
+// Where p lies, seen from t without crossing subsegments, or nothing when
+// p is lost, on a vertex (given up), beyond a subsegment or on one or on
+// the hull (split instead).
+std::optional<mesh::LocateResult> LeafRefiner::locate_point(Leaf& leaf, QueuedTriangle q,
+                                                            PoorSlot at, const Point& p) {
     const Walk walk = walk_to(mesh_, q.id, p, buffer_.random_state);
     if (walk.kind == Walk::Kind::lost || walk.where.where == mesh::Location::on_vertex) {
         give_up(q, reason_precision);
-        return;
+        return std::nullopt;
     }
     if (walk.kind == Walk::Kind::blocked) {
-        if (!may_split(walk.blocking)) {
-            give_up(q, reason_no_split);
-            return;
-        }
-        split_instead(walk.blocking);
-        return;
+        split_instead(leaf, q, at, walk.blocking);
+        return std::nullopt;
     }
     const mesh::LocateResult where = walk.where;
     if (where.where == mesh::Location::on_edge) {
         const mesh::Triangle& r = mesh_.triangle(where.triangle);
         if (r.is_subsegment(where.index) || r.n[where.index].is_none()) {
-            const EdgeRef e(where.triangle, where.index);
-            if (!may_split(e)) {
-                give_up(q, reason_no_split);
-                return;
-            }
-            split_instead(e);
-            return;
+            split_instead(leaf, q, at, EdgeRef(where.triangle, where.index));
+            return std::nullopt;
         }
     }
+    return where;
+}
 
-    // The cavity of p, found once: searched here for subsegments on its
-    // boundary that p encroaches and for the nearest vertex, then either
-    // abandoned or filled (commit_cavity, without a second search).
+// The cavity of p, found once: searched for the subsegments on its boundary
+// that p encroaches (into blocking_) and for its nearest vertex; left marked
+// for commit_cavity.  Returns the squared distance to that vertex.
+double LeafRefiner::survey_cavity(const Point& p, const mesh::LocateResult& where) {
     mesh::find_cavity(mesh_, p, where.triangle, buffer_);
     blocking_.clear();
     double nearest = std::numeric_limits<double>::infinity();
@@ -437,34 +451,13 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q, PoorSlot at) {
                 blocking_.push_back(EdgeRef(id, k));
         }
     }
-    const bool insert = blocking_.empty() &&
-                        nearest > t.circle.radius_squared * (tiny_fraction * tiny_fraction) &&
-                        budget_left();
-    if (!insert) mesh::abandon_cavity(mesh_, buffer_);
+    return nearest;
+}
 
-    if (!blocking_.empty()) {
-        bool any = false;
-        for (EdgeRef e : blocking_)
-            if (may_split(e)) {
-                leaf.push_subsegment({e, mesh_.triangle(e.triangle()).generation, true});
-                any = true;
-            }
-        if (!any) {
-            give_up(q, reason_no_split);
-            return;
-        }
-        split_queued_subsegments_then_requeue();
-        return;
-    }
-    if (nearest <= t.circle.radius_squared * (tiny_fraction * tiny_fraction)) {
-        give_up(q, reason_precision);
-        return;
-    }
-    if (!insert) {  // the budget ran out
-        leaf.push_poor(q, at);
-        return;
-    }
-
+// Fills the surveyed cavity with p (commit_cavity, without a second
+// search), carrying the host triangle's area bound to the new triangles.
+void LeafRefiner::insert_steiner_point(Leaf& leaf, const Point& p,
+                                       const mesh::LocateResult& where) {
     const mesh::Triangle& host = mesh_.triangle(where.triangle);
     const std::array<VertexId, 3> host_corners{host.v[0], host.v[1], host.v[2]};
     AreaBounds* bounds = settings_.criteria.triangle_max_area;
@@ -486,7 +479,44 @@ void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q, PoorSlot at) {
     if (bounds)
         for (TriangleId id : buffer_.created) bounds->set(id, bound);
     classify_created(leaf);
-    requeue_if_alive();  // p's cavity missed t (only through rounding): try again
+}
+
+void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q, PoorSlot at) {
+    const PoorTriangle t = describe_poor_triangle(mesh_, q.id, quality_);
+    const std::optional<Point> p = choose_point(leaf, q, t);
+    if (!p) return;
+    const std::optional<mesh::LocateResult> where = locate_point(leaf, q, at, *p);
+    if (!where) return;
+
+    const double nearest = survey_cavity(*p, *where);
+    const bool too_close = nearest <= t.circle.radius_squared * (tiny_fraction * tiny_fraction);
+    const bool insert = blocking_.empty() && !too_close && budget_left();
+    if (!insert) mesh::abandon_cavity(mesh_, buffer_);
+
+    if (!blocking_.empty()) {  // p encroaches subsegments: split them instead
+        bool any = false;
+        for (EdgeRef e : blocking_)
+            if (may_split(e)) {
+                leaf.push_subsegment({e, mesh_.triangle(e.triangle()).generation, true});
+                any = true;
+            }
+        if (!any) {
+            give_up(q, reason_no_split);
+            return;
+        }
+        split_queued_then_requeue(leaf, q, at);
+        return;
+    }
+    if (too_close) {
+        give_up(q, reason_precision);
+        return;
+    }
+    if (!insert) {  // the budget ran out
+        leaf.push_poor(q, at);
+        return;
+    }
+    insert_steiner_point(leaf, *p, *where);
+    if (alive(q)) leaf.push_poor(q, at);  // p's cavity missed t (only through rounding): again
 }
 
 namespace {

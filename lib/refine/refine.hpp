@@ -62,6 +62,7 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -223,6 +224,17 @@ private:
     // Splits q's triangle, taken from slot `at` (where it goes back if its
     // split is put off).
     void refine_triangle(Leaf& leaf, QueuedTriangle q, PoorSlot at);
+    // Its steps (refine.cpp).
+    std::optional<geometry::Point> choose_point(Leaf& leaf, QueuedTriangle q,
+                                                const PoorTriangle& t);
+    std::optional<mesh::LocateResult> locate_point(Leaf& leaf, QueuedTriangle q, PoorSlot at,
+                                                   const geometry::Point& p);
+    double survey_cavity(const geometry::Point& p, const mesh::LocateResult& where);
+    void insert_steiner_point(Leaf& leaf, const geometry::Point& p,
+                              const mesh::LocateResult& where);
+    void split_instead(Leaf& leaf, QueuedTriangle q, PoorSlot at, mesh::EdgeRef e);
+    void split_queued_then_requeue(Leaf& leaf, QueuedTriangle q, PoorSlot at);
+    bool alive(QueuedTriangle q) const;
     bool by_shape(const TriangleMeasures& m) const { return queued_by_shape(quality_, m); }
     bool split_subsegment(Leaf& leaf, mesh::EdgeRef e);
     bool may_split(mesh::EdgeRef e) const;

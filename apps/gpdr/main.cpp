@@ -63,6 +63,8 @@ constexpr std::string_view please_report =
 int main(int argc, char** argv) {
     try {
         return run(argc, argv);
+    } catch (const gpdr::ResourceError& e) {
+        return fail(e.what(), "; use --force to try anyway");
     } catch (const gpdr::Error& e) {
         return fail(e.what());
     } catch (const std::bad_alloc&) {

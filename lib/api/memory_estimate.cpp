@@ -59,8 +59,8 @@ MemoryEstimate estimate_memory(const Options& o, const mesh::Mesh& mesh,
     // -S caps the Steiner points, and each adds about two triangles.
     if (o.steiner_limit)
         e.triangles = std::min(e.triangles, double(demand.triangles) + 2.0 * double(o.max_steiner));
-    const bool neighbours = o.write_neighbours || o.write_edges || o.write_voronoi ||
-                            o.write_off || o.order == 2;
+    const bool neighbours =
+        o.write_neighbours || o.write_edges || o.write_voronoi || o.write_off || o.order == 2;
     double per_triangle = neighbours ? bytes_per_triangle_with_neighbours : bytes_per_triangle;
     if (vertex_attributes > 0)
         per_triangle += 0.5 * (bytes_per_new_vertex_record + 16.0 * vertex_attributes);

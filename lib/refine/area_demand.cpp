@@ -31,9 +31,9 @@ AreaDemand area_demand(const mesh::Mesh& mesh, const QualityCriteria& criteria) 
             d.estimate += 1;
             return;
         }
-        const double ratio = geometry::signed_area(mesh.point(t.v[0]), mesh.point(t.v[1]),
-                                                   mesh.point(t.v[2])) /
-                             bound;
+        const double ratio =
+            geometry::signed_area(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2])) /
+            bound;
         d.at_bound += ratio;
         d.estimate += std::max(1.0, AreaDemand::fill * ratio);
     });

@@ -152,8 +152,9 @@ TEST_CASE("a run whose mesh exceeds the memory available is refused", "[api][mem
         FAIL("not refused");
     } catch (const ResourceError& error) {
         const std::string what = error.what();
-        CHECK(what == "box.poly: -a5e-11 would make about 6.0e10 triangles (~3.8 TB), more "
-                      "than the 20 GB of memory available");
+        CHECK(what ==
+              "box.poly: -a5e-11 would make about 6.0e10 triangles (~3.8 TB), more "
+              "than the 20 GB of memory available");
     }
     // Enough memory, unknown memory, or --force: no refusal.
     CHECK_NOTHROW(refuse_beyond_memory(o, e, std::uint64_t(e.bytes) + 1));

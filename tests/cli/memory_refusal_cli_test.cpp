@@ -30,8 +30,7 @@ TEST_CASE("an absurd area bound is refused before refining", "[cli][memory]") {
         const auto r = run_gpdr(dir, "-pa1e-13 box.poly");
         CHECK(r.status == 1);
         CHECK(r.err.find("gpdr: box.poly: -a1e-13 would make about 3.0e13 triangles") == 0);
-        CHECK(r.err.find("of memory available; use --force to try anyway\n") !=
-              std::string::npos);
+        CHECK(r.err.find("of memory available; use --force to try anyway\n") != std::string::npos);
     }
     SECTION("the regions' bounds") {
         const auto r = run_gpdr(dir, "-pqa box.poly");

@@ -12,7 +12,7 @@ namespace {
 // Refines `m` under `criteria` and returns the estimate made before and the
 // triangles made.
 std::pair<AreaDemand, std::size_t> estimate_and_refine(mesh::Mesh m,
-                                                      const QualityCriteria& criteria) {
+                                                       const QualityCriteria& criteria) {
     const AreaDemand demand = area_demand(m, criteria);
     RefineSettings settings;
     settings.criteria = criteria;

@@ -14,6 +14,7 @@
 #include "api/job_stages.hpp"
 #include "api/memory_available.hpp"
 #include "api/memory_estimate.hpp"
+#include "api/run_stamp.hpp"
 #include "mesh/checker.hpp"
 #include "mesh/traverse.hpp"
 #include "parallel/refine_parallel.hpp"
@@ -197,6 +198,8 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
     request.base = input.nodes.base;
     request.poly = input.poly ? &*input.poly : nullptr;
     request.write_hull_poly = options.convex_hull;
+    request.stamp = api::run_stamp(options.command.empty() ? "gpdr" : options.command,
+                                   input.content_hash, result.vertices, result.triangles);
     result.files_written = api::write_outputs(request, m.tri.mesh, m.arrays);
     result.write_seconds += clock.lap();
 

@@ -99,6 +99,9 @@ void run(const char* switches, triangulateio* in, triangulateio* out, triangulat
     // an interpreter.
     if (call.threads > 0) options.threads = call.threads;
     if (options.threads == 0) options.threads = 1;
+    // Triangle's triangulate() tries whatever it is asked; a library caller
+    // sizes its own problems and has no --force to give.
+    options.force = true;
 
     JobPlugins plugins;
     plugins.triunsuitable = &triunsuitable;  // null unless the program defines one

@@ -79,6 +79,7 @@ public:
                 options.user_test = true;  // naming the test asks for it, as -u does
             },
             "shared object providing triunsuitable()");
+        app_.add_flag_callback("--force", [&options] { options.force = true; });
         app_.add_flag_callback("--help", [&action] { action = CommandLine::Action::help; });
         app_.add_flag_callback("--version", [&action] { action = CommandLine::Action::version; });
     }

@@ -22,7 +22,8 @@ std::string version_text() { return fmt::format("gpdr {}\n", GPDR_VERSION); }
 
 std::string usage_text() {
     return "Usage: gpdr [-prq__a__uAcDjevngBPNEIOXzo_YS__iFlsCQVh] [--threads N]\n"
-           "            [--granularity N] [--placement NAME] [--unsuitable LIB.so] input_file\n"
+           "            [--granularity N] [--placement NAME] [--unsuitable LIB.so] [--force]\n"
+           "            input_file\n"
            "\n"
            "Meshes input_file (.node, or .poly with -p; -r refines a .node/.ele mesh) and\n"
            "writes the result as input.1.node, input.1.ele, ...  Numbers follow their\n"
@@ -107,6 +108,9 @@ std::string help_text() {
            "                         2 optimisation (the GPDR paper's point).\n"
            "  --unsuitable LIB.so    Load triunsuitable() from a shared object (implies -u; it\n"
            "                         replaces one linked into gpdr).\n"
+           "  --force                Refine even when the mesh the area bounds call for is\n"
+           "                         estimated to need more memory than is available (gpdr\n"
+           "                         refuses such a run otherwise, writing nothing).\n"
            "  --help                 The same as -h.\n"
            "  --version              Print the version and exit.\n"
            "\n"

@@ -71,6 +71,8 @@ int main(int argc, char** argv) {
         return run(argc, argv);
     } catch (const gpdr::InternalError& e) {
         return fail(exit_internal_error, e.what(), please_report);
+    } catch (const gpdr::ResourceError& e) {
+        return fail(exit_error, e.what(), "; use --force to try anyway");
     } catch (const gpdr::Error& e) {
         return fail(exit_error, e.what());
     } catch (const std::bad_alloc&) {

@@ -12,6 +12,9 @@
 #include <gpdr/memory_job.hpp>
 
 #include "api/job_stages.hpp"
+#include "api/memory_available.hpp"
+#include "api/memory_estimate.hpp"
+#include "api/run_stamp.hpp"
 #include "mesh/checker.hpp"
 #include "mesh/traverse.hpp"
 #include "parallel/refine_parallel.hpp"
@@ -111,6 +114,10 @@ Meshed make_mesh(const Options& options, api::Input& input, const WarningSink& w
         if (settings.steiner_limit)
             settings.max_steiner = settings.max_steiner > added ? settings.max_steiner - added : 0;
         api::warn_before_refinement(options, warn);
+        api::refuse_beyond_memory(
+            options,
+            api::estimate_memory(options, tri.mesh, settings, input.nodes.data.attribute_count),
+            api::memory_available());
         m.parallel_lines = api::refine(tri.mesh, settings, options, m.refined);
         api::warn_after_refinement(m.refined, warn);
         tri.new_vertices.insert(tri.new_vertices.end(), m.refined.new_vertices.begin(),
@@ -191,6 +198,8 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
     request.base = input.nodes.base;
     request.poly = input.poly ? &*input.poly : nullptr;
     request.write_hull_poly = options.convex_hull;
+    request.stamp = api::run_stamp(options.command.empty() ? "gpdr" : options.command,
+                                   input.content_hash, result.vertices, result.triangles);
     result.files_written = api::write_outputs(request, m.tri.mesh, m.arrays);
     result.write_seconds += clock.lap();
 

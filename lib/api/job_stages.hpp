@@ -36,6 +36,7 @@ struct Input {
     std::optional<PolyFile> poly;     // -p (its nodes moved into `nodes`)
     std::optional<EleSet> triangles;  // -r
     std::optional<AreaSet> areas;     // -r with bare -a
+    std::uint64_t content_hash = 0;   // of every file read, in order (the run stamp's)
 };
 Input read_input(const Options& options, const FileNames& names, const WarningSink& warn);
 
@@ -127,6 +128,7 @@ struct OutputRequest {
     int base = 1;                    // numbering base of the run
     const PolyFile* poly = nullptr;  // the input PSLG (holes, regions), if any
     bool write_hull_poly = false;    // -c on a point set: .poly of the hull
+    std::string stamp;               // the run stamp every file's last line carries
 };
 
 // Writes every file the switches ask for, all or none (an output

@@ -4,6 +4,7 @@
 #include <gpdr/io.hpp>
 
 #include "api/job_stages.hpp"
+#include "io/content_hash.hpp"
 
 namespace gpdr::api {
 
@@ -18,14 +19,17 @@ Input read_input(const Options& options, const FileNames& names, const WarningSi
         in.poly_file = names.in_poly;
         poly.data.nodes = {};
         in.poly = std::move(poly.data);
+        in.content_hash = poly.content_hash;
         return in;
     }
     in.nodes = io::read_node(names.in_node, warn, default_base);
     in.node_file = names.in_node;
+    in.content_hash = in.nodes.content_hash;
     if (options.refine) {
         const int base = in.nodes.base;
         auto ele = io::read_ele(names.in_ele, base, in.nodes.data.size(), warn);
         in.ele_file = names.in_ele;
+        in.content_hash = io::hash_number(in.content_hash, ele.content_hash);
         if (options.poly) {
             // The .poly of a mesh written by gpdr or Triangle has no vertices
             // of its own (count 0): they come from the .node just read again.
@@ -33,9 +37,13 @@ Input read_input(const Options& options, const FileNames& names, const WarningSi
             poly.data.nodes = {};
             in.poly_file = names.in_poly;
             in.poly = std::move(poly.data);
+            in.content_hash = io::hash_number(in.content_hash, poly.content_hash);
         }
-        if (options.regional_area)
-            in.areas = io::read_area(names.in_area, base, ele.data.size(), warn).data;
+        if (options.regional_area) {
+            auto areas = io::read_area(names.in_area, base, ele.data.size(), warn);
+            in.content_hash = io::hash_number(in.content_hash, areas.content_hash);
+            in.areas = std::move(areas.data);
+        }
         in.triangles = std::move(ele.data);
     }
     return in;

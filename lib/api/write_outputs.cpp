@@ -102,7 +102,8 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
     const Options& o = *request.options;
     const FileNames& names = *request.names;
     const io::WriteFormat format{request.base, !o.no_boundary_markers,
-                                 o.command.empty() ? std::string("gpdr") : o.command};
+                                 o.command.empty() ? std::string("gpdr") : o.command,
+                                 request.stamp};
 
     const bool want_poly =
         (o.poly || request.write_hull_poly) && !o.no_poly_output && !names.out_poly.empty();

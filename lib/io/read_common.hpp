@@ -22,17 +22,26 @@ inline void check_index_capacity(TextReader& in, std::size_t count, std::string_
                             std::numeric_limits<std::uint32_t>::max() - 1));
 }
 
-// "<#attributes>" of a header.  Missing attribute values read as 0, so the
-// file's size does not bound them: allow as many values as the rest of the
-// file could hold, or a million, whichever is more, and no more.
+// "<#attributes>" of a header, for `entries` entries.  Missing attribute
+// values read as 0 (as in Triangle), but a file may not declare more values
+// than it could hold: every value takes at least two bytes (a digit and a
+// separator; the file's last may lack its separator), so entries x
+// attributes must fit in half the bytes after the header.  Otherwise a tiny
+// file could declare a million attributes per vertex, every one of them
+// stored, interpolated and written out.
 inline std::uint32_t attribute_count(TextReader& in, std::size_t entries, std::string_view what) {
     const std::int64_t n = in.integer_or(0, what);
     if (n < 0) in.fail(fmt::format("{} {} is negative", what, n));
-    const std::uint64_t allowed = std::max<std::uint64_t>(in.remaining_bytes() / 2, 1u << 20);
-    if (static_cast<std::uint64_t>(n) > allowed ||
-        (entries != 0 && static_cast<std::uint64_t>(n) > allowed / entries))
-        in.fail(fmt::format("{} {} is impossible for {} entries in a file of this size", what, n,
-                            entries));
+    const std::uint64_t holders = std::max<std::uint64_t>(entries, 1);
+    const std::uint64_t values = (std::uint64_t{in.remaining_bytes()} + 1) / 2;
+    if (static_cast<std::uint64_t>(n) > values / holders)
+        in.fail(fmt::format(
+            "{} {} is impossible: {} entries of {} values need at least {:.0f} "
+            "bytes, and the rest of the file has {}",
+            what, n, entries, n, 2.0 * double(n) * double(holders), in.remaining_bytes()));
+    if (n >= std::numeric_limits<std::uint32_t>::max())
+        in.fail(fmt::format("{} {} is more than gpdr's limit of {}", what, n,
+                            std::numeric_limits<std::uint32_t>::max() - 1));
     return static_cast<std::uint32_t>(n);
 }
 

@@ -66,6 +66,7 @@ ReadResult<EleSet> read_ele(const std::string& path, int base, std::size_t verte
         for (std::uint32_t a = 0; a < ele.attribute_count; ++a)
             ele.attributes.push_back(in.real_or(0.0, "triangle attribute"));
     }
+    r.content_hash = in.content_hash();
     return r;
 }
 
@@ -85,6 +86,7 @@ ReadResult<AreaSet> read_area(const std::string& path, int base, std::size_t tri
         entry_id(in, ids, k, r.base, "triangle number", warn);
         r.data.push_back(in.real_or(-1.0, "maximum area"));
     }
+    r.content_hash = in.content_hash();
     return r;
 }
 
@@ -112,6 +114,7 @@ ReadResult<EdgeSet> read_edge(const std::string& path, int base, std::size_t ver
         r.data.endpoints.push_back(b);
         if (markers) r.data.markers.push_back(detail::marker(in, "edge marker"));
     }
+    r.content_hash = in.content_hash();
     return r;
 }
 
@@ -139,6 +142,7 @@ ReadResult<NeighbourSet> read_neigh(const std::string& path, int base, std::size
                                                                         "neighbour", "triangles"));
         }
     }
+    r.content_hash = in.content_hash();
     return r;
 }
 
@@ -174,6 +178,7 @@ ReadResult<VoronoiEdgeSet> read_voronoi_edge(const std::string& path, int base,
             r.data.directions.push_back(0.0);
         }
     }
+    r.content_hash = in.content_hash();
     return r;
 }
 

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 #include <gpdr/io.hpp>
 
+#include "io/content_hash.hpp"
 #include "io/read_common.hpp"
 #include "io/text_reader.hpp"
 
@@ -88,6 +89,7 @@ ReadResult<NodeSet> read_node_impl(const std::string& path, std::string_view why
     const NodeHeader h = read_node_header(in);
     ReadResult<NodeSet> r;
     r.data = read_vertices(in, h, default_base, r.base, warn);
+    r.content_hash = in.content_hash();
     return r;
 }
 
@@ -122,6 +124,7 @@ ReadResult<PolyFile> read_poly(const std::string& path, const WarningSink& warn,
         poly.nodes = std::move(nodes.data);
         poly.nodes_from_node_file = true;
         r.base = nodes.base;
+        r.content_hash = nodes.content_hash;
     } else {
         poly.nodes = read_vertices(in, h, default_base, r.base, warn);
     }
@@ -181,6 +184,7 @@ ReadResult<PolyFile> read_poly(const std::string& path, const WarningSink& warn,
         }
         if (in.next_line()) in.warn(warn, "data after the region list is ignored");
     }
+    r.content_hash = hash_number(r.content_hash, in.content_hash());
     return r;
 }
 

@@ -19,6 +19,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "io/content_hash.hpp"
+
 namespace gpdr::io::detail {
 
 namespace {
@@ -175,6 +177,10 @@ bool TextReader::next_line() {
 std::size_t TextReader::remaining_bytes() const noexcept {
     if (next_ == nullptr) return 0;
     return static_cast<std::size_t>(text_.data() + text_.size() - next_);
+}
+
+std::uint64_t TextReader::content_hash() const noexcept {
+    return hash_bytes(std::string_view(text_.data(), text_.size()));
 }
 
 void TextReader::skip_blanks() noexcept {

@@ -71,6 +71,8 @@ public:
     std::size_t line() const noexcept { return line_; }
     // Bytes after the current line: what the rest of the file can hold.
     std::size_t remaining_bytes() const noexcept;
+    // A hash of the whole file's bytes (content_hash.hpp), for the run stamp.
+    std::uint64_t content_hash() const noexcept;
 
     // True when the current line has another field.
     bool has_field();

@@ -291,7 +291,14 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in
 
     if (threads == 1 && options.one_leaf_for_one_thread) {
         const auto t0 = Clock::now();
+        // Labelled here too: without labels the small-angle rule walks a
+        // subsegment's chain (up to 256 steps each way) every time it is
+        // asked, which long chains, as -D's splits make on a -r mesh's
+        // boundary, turn into most of the run.
+        SegmentLabels labels(mesh, settings.segment_ends);
+        settings.segment_ends = labels.ends();
         refine::refine_mesh(mesh, settings, report.refine);
+        labels.restore();
         report.workers.assign(1, ThreadTimes{seconds(t0, Clock::now()), 0, 0});
         report.leaves = 1;
         return;

@@ -6,6 +6,8 @@
 #include <array>
 #include <tuple>
 #include <unordered_set>
+#include <utility>
+#include <vector>
 
 #include "mesh/traverse.hpp"
 #include "refine/segments.hpp"
@@ -19,25 +21,44 @@ SegmentLabels::SegmentLabels(mesh::Mesh& mesh, std::span<const mesh::VertexId> g
     auto usable = [&](const mesh::SubsegmentInfo* info) {
         return info != nullptr && info->segment < first_label_;
     };
-    std::unordered_set<std::uint64_t> labelled;  // (each subsegment is seen from both sides)
+    const auto key = [](mesh::VertexId a, mesh::VertexId b) {
+        return std::min(mesh::index(a), mesh::index(b)) |
+               std::uint64_t{std::max(mesh::index(a), mesh::index(b))} << 32;
+    };
+    // Subsegments already labelled (each is seen from both sides, and every
+    // piece of a chain is labelled by the one walk that meets it first).
+    std::unordered_set<std::uint64_t> labelled;
+    std::vector<std::array<mesh::VertexId, 2>> pieces;
     mesh::for_each_triangle(mesh, [&](mesh::TriangleId t, const mesh::Triangle& r) {
         for (int k = 0; k < 3; ++k) {
             if (!r.is_subsegment(k)) continue;
             const mesh::VertexId a = r.v[mesh::next3(k)], b = r.v[mesh::prev3(k)];
-            const mesh::SubsegmentInfo* info = mesh.subsegments().find(a, b);
-            if (usable(info)) continue;
-            const std::uint64_t key = std::min(mesh::index(a), mesh::index(b)) |
-                                      std::uint64_t{std::max(mesh::index(a), mesh::index(b))} << 32;
-            if (!labelled.insert(key).second) continue;
+            if (usable(mesh.subsegments().find(a, b)) || labelled.count(key(a, b)) != 0) continue;
             std::array<mesh::VertexId, 2> ends{mesh::no_vertex, mesh::no_vertex};
-            if (!refine::walk_segment_ends(mesh, mesh::EdgeRef(t, k), ends))
+            pieces.clear();
+            if (!refine::walk_segment_chain(mesh, mesh::EdgeRef(t, k), ends, pieces))
                 ends = {mesh::no_vertex, mesh::no_vertex};
-            mesh::SubsegmentInfo labelled = info != nullptr ? *info : mesh::SubsegmentInfo{};
-            original_.push_back(labelled.segment);
-            labelled.segment = static_cast<std::uint32_t>(ends_.size() / 2);
-            ends_.push_back(ends[0]);
-            ends_.push_back(ends[1]);
-            mesh.subsegments().set(a, b, labelled);
+            // One label per original index met on the chain (almost always
+            // just one), so that restore() can give each piece its own back.
+            std::vector<std::pair<std::uint32_t, std::uint32_t>> label_of;  // original -> label
+            for (const auto& [u, w] : pieces) {
+                const mesh::SubsegmentInfo* info = mesh.subsegments().find(u, w);
+                if (usable(info) || !labelled.insert(key(u, w)).second) continue;
+                mesh::SubsegmentInfo relabelled = info != nullptr ? *info : mesh::SubsegmentInfo{};
+                auto found = std::find_if(label_of.begin(), label_of.end(), [&](const auto& p) {
+                    return p.first == relabelled.segment;
+                });
+                if (found == label_of.end()) {
+                    label_of.emplace_back(relabelled.segment,
+                                          static_cast<std::uint32_t>(ends_.size() / 2));
+                    found = label_of.end() - 1;
+                    original_.push_back(relabelled.segment);
+                    ends_.push_back(ends[0]);
+                    ends_.push_back(ends[1]);
+                }
+                relabelled.segment = found->second;
+                mesh.subsegments().set(u, w, relabelled);
+            }
         }
     });
 }

@@ -17,6 +17,7 @@
 #include "mesh/locate.hpp"
 #include "mesh/split_subsegment.hpp"
 #include "mesh/traverse.hpp"
+#include "refine/area_demand.hpp"
 #include "refine/segments.hpp"
 
 namespace gpdr::refine {
@@ -117,12 +118,7 @@ RefineRun::RefineRun(const mesh::Mesh& mesh, const RefineSettings& settings)
             min_y = std::min(min_y, p.y);
             max_y = std::max(max_y, p.y);
         }
-        double bound = std::numeric_limits<double>::infinity();
-        if (c.max_area > 0) bound = c.max_area;
-        if (t.region < c.region_max_area.size() && c.region_max_area[t.region] > 0)
-            bound = std::min(bound, c.region_max_area[t.region]);
-        if (c.triangle_max_area != nullptr && c.triangle_max_area->get(id) > 0)
-            bound = std::min(bound, c.triangle_max_area->get(id));
+        const double bound = area_bound(c, id, t);
         if (std::isfinite(bound))
             expected +=
                 geometry::signed_area(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2])) /

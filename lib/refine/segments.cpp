@@ -97,12 +97,16 @@ VertexId continuation(const mesh::Mesh& mesh, mesh::TriangleId t, VertexId u, Ve
     return best;
 }
 
-VertexId chain_end(const mesh::Mesh& mesh, EdgeRef e, VertexId u, VertexId x, int limit) {
-    for (int step = 0; step < limit; ++step) {
+// Appends each subsegment it steps onto (not u-x itself) to `pieces` when
+// that is not null.
+VertexId chain_end(const mesh::Mesh& mesh, EdgeRef e, VertexId u, VertexId x, std::uint64_t limit,
+                   std::vector<std::array<VertexId, 2>>* pieces = nullptr) {
+    for (std::uint64_t step = 0; step < limit; ++step) {
         if (mesh.kind(x) != VertexKind::segment) return x;
         EdgeRef next_edge = EdgeRef::none();
         const VertexId next = continuation(mesh, e.triangle(), u, x, next_edge);
         if (next == mesh::no_vertex) return mesh::no_vertex;
+        if (pieces != nullptr) pieces->push_back({x, next});
         u = x;
         x = next;
         e = next_edge;
@@ -140,6 +144,19 @@ bool walk_segment_ends(const mesh::Mesh& mesh, EdgeRef e, std::array<VertexId, 2
     if (backward == mesh::no_vertex) return false;
     ends = {forward, backward};
     return true;
+}
+
+bool walk_segment_chain(const mesh::Mesh& mesh, EdgeRef e, std::array<VertexId, 2>& ends,
+                        std::vector<std::array<VertexId, 2>>& pieces) {
+    // A chain has fewer pieces than the mesh has vertices; more steps mean
+    // the walk is going round a loop (a broken mesh), and stops.
+    const std::uint64_t limit = std::uint64_t{mesh.vertex_end()} + 1;
+    const VertexId a = mesh.origin(e), b = mesh.destination(e);
+    pieces.push_back({a, b});
+    const VertexId forward = chain_end(mesh, e, a, b, limit, &pieces);
+    const VertexId backward = chain_end(mesh, e, b, a, limit, &pieces);
+    ends = {forward, backward};
+    return forward != mesh::no_vertex && backward != mesh::no_vertex;
 }
 
 bool small_angle_protected(const mesh::Mesh& mesh, mesh::TriangleId t, int k,

@@ -117,6 +117,17 @@ struct SegmentEnds {
 bool walk_segment_ends(const mesh::Mesh& mesh, mesh::EdgeRef e,
                        std::array<mesh::VertexId, 2>& ends);
 
+// The same walk, however long the chain, also listing every subsegment on it
+// (e's first, as (origin, destination); the others as met) in `pieces`: the
+// parallel layer labels a whole chain from one walk, so that labelling every
+// subsegment costs time linear in their number, where walking from each one
+// would cost the chain's length for each.  False when the chain breaks; the
+// pieces walked are listed all the same, and `ends` holds no_vertex on the
+// broken side.
+bool walk_segment_chain(const mesh::Mesh& mesh, mesh::EdgeRef e,
+                        std::array<mesh::VertexId, 2>& ends,
+                        std::vector<std::array<mesh::VertexId, 2>>& pieces);
+
 // The small-input-angle rule above for triangle t whose shortest edge is
 // edge k.
 bool small_angle_protected(const mesh::Mesh& mesh, mesh::TriangleId t, int k,

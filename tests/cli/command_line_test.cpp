@@ -54,10 +54,10 @@ TEST_CASE("gpdr -h lists every switch and long option, exit status 0", "[cli][co
     CHECK(r.status == 0);
     CHECK(r.err.empty());
     for (const std::string letter :
-         {"-p", "-r",  "-q",  "-a",  "-u",  "-A",           "-c",     "-D",       "-j", "-e",
-          "-v", "-n",  "-g",  "-B",  "-P",  "-N",           "-E",     "-I",       "-O", "-X",
-          "-z", "-o2", "-Y",  "-S",  "-i",  "-F",           "-l",     "-s",       "-C", "-Q",
-          "-V", "-h",  "-jN", "-gN", "-PN", "--unsuitable", "--help", "--version"}) {
+         {"-p", "-r",  "-q",  "-a",  "-u",  "-A",           "-c",      "-D",     "-j",       "-e",
+          "-v", "-n",  "-g",  "-B",  "-P",  "-N",           "-E",      "-I",     "-O",       "-X",
+          "-z", "-o2", "-Y",  "-S",  "-i",  "-F",           "-l",      "-s",     "-C",       "-Q",
+          "-V", "-h",  "-jN", "-gN", "-PN", "--unsuitable", "--force", "--help", "--version"}) {
         INFO("switch " << letter);
         CHECK(has_entry(r.out, letter));
     }

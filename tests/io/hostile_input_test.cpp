@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 
 #include <gpdr/errors.hpp>
@@ -73,4 +74,35 @@ TEST_CASE("a file that is not regular is read up to a cap", "[io][hostile]") {
                             .c_str()) == 0);
     const io::detail::FileText text(fifo, "");
     CHECK(std::string(text.data(), text.size()) == dir.read("p.node"));
+}
+
+TEST_CASE("a header may declare no more attribute values than the file holds", "[io][hostile]") {
+    TempDir dir;
+    test::WarningLog log;
+    // A 42-byte file declaring 333,333 attributes per vertex: a million
+    // values, every one stored, interpolated and written out if accepted.
+    dir.write("big.node", "3 2 333333 0\n1 0 0 # 3 points\n2 1 0\n3 0 1\n");
+    REQUIRE(std::filesystem::file_size(dir / "big.node") == 42);
+    try {
+        io::read_node((dir / "big.node").string(), log.sink());
+        FAIL("accepted");
+    } catch (const InputError& e) {
+        CHECK(e.line() == 1);
+        CHECK_THAT(e.reason(), Catch::Contains("vertex attribute count 333333 is impossible"));
+    }
+
+    // Every value takes two bytes or more: the 12 bytes after the header
+    // hold at most 6 values (the last needs no separator), missing ones
+    // reading as 0 as in Triangle.
+    dir.write("six.node", "1 2 6 0\n1 0 0 5 6 7");
+    const auto six = io::read_node((dir / "six.node").string(), log.sink());
+    CHECK(six.data.attributes == std::vector<double>{5, 6, 7, 0, 0, 0});
+    dir.write("seven.node", "1 2 7 0\n1 0 0 5 6 7");
+    CHECK_THROWS_AS(io::read_node((dir / "seven.node").string(), log.sink()), InputError);
+
+    // The same for a .poly's vertices and an .ele's triangles.
+    dir.write("big.poly", "3 2 1000 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n0\n");
+    CHECK_THROWS_AS(io::read_poly((dir / "big.poly").string(), log.sink()), InputError);
+    dir.write("big.ele", "1 3 50\n1 1 2 3\n");
+    CHECK_THROWS_AS(io::read_ele((dir / "big.ele").string(), 1, 3, log.sink()), InputError);
 }

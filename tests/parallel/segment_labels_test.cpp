@@ -4,10 +4,15 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <map>
+#include <set>
 #include <utility>
 
 #include "geometry/predicates.hpp"
+#include "mesh/insert.hpp"
+#include "mesh/pool.hpp"
+#include "mesh/split_subsegment.hpp"
 #include "parallel/segment_labels.hpp"
 #include "refine/refine_support.hpp"
 
@@ -92,6 +97,51 @@ TEST_CASE("segment labels cover a point set's hull edges and are removed again",
     const auto before = segment_indices(m);
     SegmentLabels labels(m, {});
     check_labels(m, labels);
+    labels.restore();
+    CHECK(segment_indices(m) == before);
+}
+
+TEST_CASE("segment labels label a long chain of subsegments from one walk", "[parallel]") {
+    // A 1000 x 1 rectangle whose bottom edge is split at x = 1, 2, ..., 600
+    // by segment vertices: a chain of 601 subsegments between two corners,
+    // longer than the 256 steps a walk from one subsegment may take.
+    mesh::Mesh m = refine::testing::point_set_mesh({{0, 0}, {1000, 0}, {1000, 1}, {0, 1}});
+    const mesh::VertexId left{0}, right{1};
+    constexpr int splits = 600;
+    {
+        mesh::Pool pool(m);
+        mesh::InsertBuffer buffer;
+        mesh::VertexId from = left;
+        for (int i = 1; i <= splits; ++i) {
+            mesh::EdgeRef piece = mesh::EdgeRef::none();
+            mesh::for_each_edge(m, [&](const mesh::EdgeView& e) {
+                if (e.subsegment && std::minmax(e.from, e.to) == std::minmax(from, right))
+                    piece = e.edge;
+            });
+            REQUIRE(!piece.is_none());
+            const auto r = mesh::split_subsegment(pool, piece, {double(i), 0.0},
+                                                  mesh::VertexKind::segment, buffer);
+            REQUIRE(r.status == mesh::InsertStatus::inserted);
+            from = r.vertex;
+        }
+    }
+    const auto before = segment_indices(m);
+    REQUIRE(before.size() == splits + 4);
+
+    SegmentLabels labels(m, {});
+    check_labels(m, labels);
+    // One label per chain: the bottom's 601 pieces share one, whose ends are
+    // the two corners; each other side has its own.
+    CHECK(labels.ends().size() == 2 * 4);
+    std::set<std::uint32_t> bottom;
+    m.subsegments().for_each(
+        [&](mesh::VertexId a, mesh::VertexId b, const mesh::SubsegmentInfo& info) {
+            if (m.point(a).y == 0 && m.point(b).y == 0) bottom.insert(info.segment);
+        });
+    REQUIRE(bottom.size() == 1);
+    const auto ends = labels.ends();
+    const std::uint32_t label = *bottom.begin();
+    CHECK(std::minmax(ends[2 * label], ends[2 * label + 1]) == std::minmax(left, right));
     labels.restore();
     CHECK(segment_indices(m) == before);
 }

@@ -56,6 +56,13 @@ public:
     using Error::Error;
 };
 
+// A run that would need more than the machine can give it, found before the
+// work starts (the memory an area bound's mesh would take).
+class ResourceError : public Error {
+public:
+    using Error::Error;
+};
+
 // Invalid input geometry that is not tied to one line of a file (all points
 // collinear, fewer than three vertices, ...).
 class GeometryError : public Error {

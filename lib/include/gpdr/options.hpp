@@ -59,6 +59,9 @@ struct Options {
     unsigned granularity = 0;                     // -gN / --granularity; 0: built-in default
     Placement placement = Placement::off_centre;  // -PN / --placement
     std::string unsuitable_library;               // --unsuitable PATH.so
+    // --force: refine even when the mesh the area bounds call for is
+    // estimated to need more memory than is available.
+    bool force = false;
 
     // The input name as given on the command line (last one wins).
     std::string input;

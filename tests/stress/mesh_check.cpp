@@ -191,21 +191,26 @@ std::vector<std::string> check_mesh(const PolyFile& input, const ExactDomain& do
             return (static_cast<long double>(mesh.xy[2 * v]) - points[edge.a].x) * dx +
                    (static_cast<long double>(mesh.xy[2 * v + 1]) - points[edge.a].y) * dy;
         };
-        long at = from;
-        const long double end = along(to);
-        while (at != to) {
-            long next = -1;
+        // A chain of mesh edges from `from` to `to` through vertices on the
+        // segment, each further along it than the last: a depth-first search,
+        // since near a cluster of rounded crossing points a step may lead
+        // nowhere.  A vertex within rounding of the end may lie a hair past it.
+        const long double end = along(to) + tolerance * std::hypot(dx, dy);
+        std::vector<long> stack{from};
+        std::vector<long> seen{from};
+        long at = -1;
+        while (!stack.empty() && at != to) {
+            at = stack.back();
+            stack.pop_back();
+            if (at == to) break;
             for (std::uint32_t n : neighbours[static_cast<std::size_t>(at)]) {
-                if (n == to) {
-                    next = to;
-                    break;
-                }
-                const long double a = along(n);
-                if (a > along(at) && a < end && on_line(n, line) && (next < 0 || a < along(next)))
-                    next = n;
+                const long next = n;
+                if (std::find(seen.begin(), seen.end(), next) != seen.end()) continue;
+                const long double a = along(next);
+                if (next != to && (a <= along(at) || a >= end || !on_line(n, line))) continue;
+                seen.push_back(next);
+                stack.push_back(next);
             }
-            if (next < 0) break;
-            at = next;
         }
         if (at != to) {
             const int s = line.segment;

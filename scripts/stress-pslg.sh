@@ -10,6 +10,8 @@
 #   THREADS="1 2"     gpdr's -jN values, each a row of its own
 #   TIME_LIMIT=10     seconds a run may take before it counts as a hang
 #   KEEP=FOLDER       keep there each input that was not right, named by seed
+#   STRICT_ANGLES=1   also count small angles opposite an edge spanning a sharp
+#                     input angle, which Ruppert's algorithm leaves (mesh_check.hpp)
 #   TRIANGLE=/path/to/triangle   also count Triangle 1.6's results on the same inputs
 #   BUILD=build       the build folder (configured here if it does not exist)
 # Every switch set meshes the same inputs: seeds 1 .. COUNT.  One input is
@@ -24,7 +26,8 @@ fi
 build=${BUILD:-"$root/build"}
 [ -f "$build/CMakeCache.txt" ] || cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" --target gpdr_app stress_pslg -j"${JOBS:-2}" >/dev/null
-set -- --count "$count" --time-limit "${TIME_LIMIT:-10}" ${KEEP:+--keep "$KEEP"} "$@"
+set -- --count "$count" --time-limit "${TIME_LIMIT:-10}" ${KEEP:+--keep "$KEEP"} \
+    ${STRICT_ANGLES:+--strict-angles} "$@"
 "$build/tests/stress_pslg" --mesher "$build/gpdr" --threads "${THREADS:-1 2}" "$@"
 if [ -n "${TRIANGLE:-}" ]; then
     echo

@@ -3,6 +3,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 
@@ -121,4 +122,23 @@ TEST_CASE("stress checker: right and wrong meshes", "[stress][checker]") {
     CHECK(check_mesh(regions, regioned, attributed, with_attributes).empty());
     attributed.attributes = {2, 0, 1, 0};
     CHECK(mentions(check_mesh(regions, regioned, attributed, with_attributes), "attribute"));
+}
+
+TEST_CASE("stress checker: small angles near a sharp input angle", "[stress][checker]") {
+    // A triangle with an angle of 11.3 degrees at (0, 0); p and q lie on its
+    // two sides at distance 1 from there, as concentric shells put them.
+    gpdr::PolyFile input;
+    input.nodes.xy = {0, 0, 10, 0, 10, 2};
+    input.segments.endpoints = {0, 1, 1, 2, 2, 0};
+    const ExactDomain domain(input, false);
+    WrittenMesh mesh;
+    const double s = std::sqrt(104.0);
+    mesh.xy = {0, 0, 10, 0, 10, 2, 1, 0, 10 / s, 2 / s};
+    mesh.triangles = {0, 3, 4, 3, 1, 4, 1, 2, 4};
+    CheckSettings quality;
+    quality.min_angle = 10;
+    // The angle of 1.2 degrees at (10, 0) is opposite the edge pq.
+    CHECK(check_mesh(input, domain, mesh, quality).empty());
+    quality.excuse_spanning_edges = false;
+    CHECK(mentions(check_mesh(input, domain, mesh, quality), "1 triangles have an angle below 10"));
 }

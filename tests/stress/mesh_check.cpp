@@ -387,7 +387,8 @@ std::vector<std::string> check_mesh(const PolyFile& input, const ExactDomain& do
                     static_cast<double>(std::atan2(std::abs(ux * wy - uy * wx), ux * wx + uy * wy) *
                                         180 / std::numbers::pi_v<long double>);
                 if (angle >= settings.min_angle - 1e-5 || sharp_input_angle(v) ||
-                    spans_sharp_input_angle(corner(t, (k + 1) % 3), corner(t, (k + 2) % 3)))
+                    (settings.excuse_spanning_edges &&
+                     spans_sharp_input_angle(corner(t, (k + 1) % 3), corner(t, (k + 2) % 3))))
                     continue;
                 ++bad;
                 counted = true;

@@ -48,6 +48,9 @@ struct CheckSettings {
     double min_angle = 0;  // degrees; 0: no angle bound
     std::size_t left_by_precision = 0;
     bool attributes = false;  // -A: check region attributes
+    // Excuse small angles opposite an edge that spans a sharp input angle
+    // (see above); false counts them as wrong.
+    bool excuse_spanning_edges = true;
 };
 
 // The problems found, one sentence each (at most a few per kind); empty when

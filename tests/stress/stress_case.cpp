@@ -113,6 +113,7 @@ Outcome run_case(const Mesher& mesher, const RunSpec& spec, const PolyFile& inpu
         settings.min_angle = min_angle_of(spec.switches);
         settings.left_by_precision = mesher.gpdr ? left_by_precision(err) : 0;
         settings.attributes = !input.regions.empty();
+        settings.excuse_spanning_edges = !spec.strict_angles;
         problems = check_mesh(input, domain, mesh, settings);
     } catch (const Error& e) {
         problems.push_back(std::string("its output does not read: ") + e.what());

@@ -27,6 +27,7 @@ struct RunSpec {
     std::string switches;  // one word, such as "-pq20"; C (and A with regions) are added
     int threads = 0;       // gpdr's -jN; 0: not given
     double time_limit = 10;
+    bool strict_angles = false;  // no excuse for angles opposite edges spanning input angles
 };
 
 struct Outcome {

@@ -78,6 +78,8 @@ int main(int argc, char** argv) {
             keep = value();
         else if (arg == "--verbose")
             verbose = true;
+        else if (arg == "--strict-angles")
+            strict_angles = true;
         else if (arg == "--threads") {
             threads.clear();
             std::istringstream words(value());

@@ -1,0 +1,97 @@
+#pragma once
+// The mesh against the input it was made from (-C): a check that looks only
+// at the finished mesh and at the input as read, never at what the stages
+// recorded about it (the subsegment flags and side table, the CDT's report
+// of crossings), so that a mistake in that bookkeeping cannot hide itself.
+// check_mesh (checker.hpp) checks the mesh on its own: topology,
+// orientation and the constrained Delaunay property; this checks that it is
+// a mesh of the input:
+//
+//   segments   every part of an input segment that lies in the domain is a
+//              chain of mesh edges along it.  A mesh vertex is on segment
+//              a-b when orient2d says it is on the line, between a and b
+//              (or at them); where a-b crosses another input segment (exact
+//              orient2d signs), the crossing is a rounded point, and the
+//              pieces of a-b (and the splits refinement makes of them) lie
+//              off the line by up to that rounding: on such a segment a
+//              vertex within a small tolerance of the line counts too
+//              (1e-11 of the longer of the two segments plus 2^-44 of their
+//              largest coordinate, for each crossing, computed here from
+//              the input).  Between two consecutive vertices on a-b there
+//              must be a mesh edge, unless that piece lies outside the
+//              domain: its midpoint outside every triangle (not even on an
+//              edge) and no boundary edge crossing it;
+//   boundary   every boundary edge of the mesh (a triangle on one side
+//              only) is such an edge along a segment, or along the convex
+//              hull of the input vertices when the hull bounds the domain
+//              (-c, or a point set);
+//   vertices   every input vertex in the domain (in a triangle or on its
+//              boundary) is a mesh vertex (one of equal coordinates:
+//              duplicates coincide);
+//   holes      no hole point lies inside a triangle;
+//   regions    the triangles a region point reaches without crossing a
+//              segment (the last region point that reaches them, as in
+//              Triangle) carry its attribute, the others 0 (-A);
+//   bounds     no triangle has an angle below the bound, or an area above
+//              the global or its region's bound, except those refinement
+//              reports it gave up (`exempt`) and those whose shortest edge
+//              joins two segments that meet at an input vertex at less than
+//              60 degrees (the angle is the input's).
+//
+// Zero-length and duplicate segments, and the parts of segments in holes
+// or outside the domain, are not problems.  Segments are found near
+// vertices through a uniform grid (geometry/segment_grid.hpp), crossings
+// among the segments of each cell, and points are located against the
+// boundary edges (geometry/edge_strips.hpp), so the check runs in time
+// about linear in the mesh and the input.
+//
+// It never throws on a wrong mesh and never prints: it returns the problems,
+// each a sentence naming input vertices, segments, holes and regions by
+// their numbers in the input files (`base` is the first number) and mesh
+// vertices by coordinates, at most `max_problems` of them and then one
+// line saying how many more.
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "geometry/point.hpp"
+#include "mesh/mesh.hpp"
+
+namespace gpdr::mesh {
+
+struct InputRegion {
+    geometry::Point at;
+    double attribute = 0;
+    double max_area = -1;  // <= 0: no bound
+};
+
+// The input as read.
+struct InputGeometry {
+    std::vector<geometry::Point> points;
+    std::vector<std::uint32_t> segments;  // 2 per segment, indices into points
+    std::vector<geometry::Point> holes;
+    std::vector<InputRegion> regions;
+    bool hull_bounds_domain = false;  // -c, or a point set
+    // Which input vertices the mesh must keep when they lie in the domain
+    // (empty: all; -r: the corners of the triangles read).
+    std::vector<bool> vertex_required;
+};
+
+struct InputCheckOptions {
+    int base = 0;                    // the number of the first vertex, segment, hole and region
+    double min_angle = 0;            // degrees; 0: no angle bound
+    double max_area = 0;             // the global area bound; <= 0: none
+    bool regional_area = false;      // the regions' area bounds apply
+    bool region_attributes = false;  // -A: check each triangle's attribute
+    // -A: the attribute of each value of Triangle::region.
+    std::span<const double> attribute_of_region;
+    // Triangles refinement gave up, sorted by id: not held to the bounds.
+    std::span<const TriangleId> exempt;
+    std::size_t max_problems = 100;
+};
+
+std::vector<std::string> check_against_input(const Mesh& mesh, const InputGeometry& input,
+                                             const InputCheckOptions& options = {});
+
+}  // namespace gpdr::mesh

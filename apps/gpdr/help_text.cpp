@@ -86,7 +86,9 @@ std::string help_text() {
            "  -l        Vertical cuts only (accepted, no effect, as -i).\n"
            "  -s        Segments by splitting (accepted, no effect: gpdr always inserts\n"
            "            segments by constrained retriangulation).\n"
-           "  -C        Check the final mesh (topology, orientation, Delaunay property).\n"
+           "  -C        Check the final mesh: topology, orientation, constrained Delaunay,\n"
+           "            and against the input (segments covered, boundary, vertices, holes,\n"
+           "            regions, bounds).  On a problem nothing is written (status 3).\n"
            "  -Q        Quiet: print no \"Wrote\" lines and no warnings.\n"
            "  -V        Verbose: print statistics; repeat (-VV, -VVV) for more.\n"
            "  -h, -H, -?\n"
@@ -117,7 +119,8 @@ std::string help_text() {
            "\n"
            "Messages: \"Wrote FILE\" lines and statistics on standard output; warnings\n"
            "and errors as \"gpdr: ...\" on standard error.  Exit status: 0 on success (and\n"
-           "for -h and for no input), 1 on any error or a failed -C check.\n"
+           "for -h and for no input), 1 on any error, 3 when -C found problems (no file\n"
+           "written), 128 + n when killed by signal n.\n"
            "See gpdr(1) for the file formats and the few deliberate differences from\n"
            "Triangle.\n";
 }

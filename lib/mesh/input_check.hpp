@@ -7,24 +7,27 @@
 // orientation and the constrained Delaunay property; this checks that it is
 // a mesh of the input:
 //
-//   segments   every part of an input segment that lies in the domain is a
-//              chain of mesh edges along it.  A mesh vertex is on segment
+//   segments   every part of an input segment that lies in the domain is
+//              covered by mesh edges along it.  A mesh vertex is on segment
 //              a-b when orient2d says it is on the line, between a and b
-//              (or at them); where a-b crosses another input segment (exact
-//              orient2d signs), the crossing is a rounded point, and the
-//              pieces of a-b (and the splits refinement makes of them) lie
-//              off the line by up to that rounding: on such a segment a
-//              vertex within a small tolerance of the line counts too
-//              (1e-11 of the longer of the two segments plus 2^-44 of their
-//              largest coordinate, for each crossing, computed here from
-//              the input).  Between two consecutive vertices on a-b there
-//              must be a mesh edge, unless that piece lies outside the
-//              domain: its midpoint outside every triangle (not even on an
-//              edge) and no boundary edge crossing it;
+//              (or at them), or when it lies within rounding of the line:
+//              split points are rounded, so a vertex within 2^-44 of the
+//              segment's largest coordinate counts, and where a-b crosses
+//              another input segment (exact orient2d signs) the crossing
+//              is a rounded point and the pieces of a-b end there, so each
+//              crossing widens that to 1e-11 of the longer segment plus
+//              2^-44 of the largest coordinate (computed here, from the
+//              input and a floating construction of the crossing point).
+//              A mesh edge covers the stretch between two vertices on a-b
+//              when no vertex exactly on the line lies between them (one
+//              only within rounding may: it may lie just inside the domain);
+//              a stretch no edge covers must lie outside the domain: its
+//              midpoint outside every triangle (not even on an edge) and no
+//              boundary edge crossing it;
 //   boundary   every boundary edge of the mesh (a triangle on one side
-//              only) is such an edge along a segment, or along the convex
-//              hull of the input vertices when the hull bounds the domain
-//              (-c, or a point set);
+//              only) joins two vertices on one segment, or on one edge of
+//              the convex hull of the input vertices when the hull bounds
+//              the domain (-c, or a point set);
 //   vertices   every input vertex in the domain (in a triangle or on its
 //              boundary) is a mesh vertex (one of equal coordinates:
 //              duplicates coincide);
@@ -35,8 +38,8 @@
 //   bounds     no triangle has an angle below the bound, or an area above
 //              the global or its region's bound, except those refinement
 //              reports it gave up (`exempt`) and those whose shortest edge
-//              joins two segments that meet at an input vertex at less than
-//              60 degrees (the angle is the input's).
+//              joins two segments that meet at an end of both at 60 degrees
+//              or less (the small angle is the input's).
 //
 // Zero-length and duplicate segments, and the parts of segments in holes
 // or outside the domain, are not problems.  Segments are found near

@@ -93,6 +93,7 @@ std::vector<std::string> check(const Options& options, int base,
                                const Meshed& m) {
     mesh::CheckOptions own;
     own.base = base;
+    own.threads = parallel::thread_count(options.threads);
     std::vector<std::string> problems = mesh::check_mesh(tri.mesh, own);
     mesh::InputCheckOptions against;
     against.base = base;

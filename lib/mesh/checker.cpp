@@ -2,6 +2,10 @@
 
 #include "mesh/checker.hpp"
 
+#include <algorithm>
+#include <exception>
+#include <thread>
+
 #include <fmt/format.h>
 
 #include "geometry/predicates.hpp"
@@ -20,6 +24,17 @@ public:
             problems_.push_back(fmt::format(format, std::forward<Args>(args)...));
         else
             ++dropped_;
+    }
+
+    // Appends another report's problems, as if they had been added here.
+    void take(Report& other) {
+        for (auto& p : other.problems_) {
+            if (problems_.size() < limit_)
+                problems_.push_back(std::move(p));
+            else
+                ++dropped_;
+        }
+        dropped_ += other.dropped_;
     }
 
     std::vector<std::string> finish() {
@@ -45,17 +60,16 @@ std::string describe(TriangleId id, const Triangle& t, int base) {
                        number(t.v[1], base), number(t.v[2], base));
 }
 
-}  // namespace
-
-std::vector<std::string> check_mesh(const Mesh& mesh, const CheckOptions& options) {
-    Report report(options.max_problems);
+// The checks of triangle slots [first, end): problems into `report`, and
+// the flagged edges seen (each once, from its lower triangle) counted.
+void check_slots(const Mesh& mesh, const CheckOptions& options, std::uint32_t first,
+                 std::uint32_t last, Report& report, std::size_t& flagged_edges) {
     const int base = options.base;
     const auto num = [base](auto id) { return number(id, base); };
     const std::uint32_t end = mesh.triangle_end();
     const std::uint32_t vertex_end = mesh.vertex_end();
-    std::size_t flagged_edges = 0;
 
-    for (std::uint32_t i = 0; i < end; ++i) {
+    for (std::uint32_t i = first; i < last; ++i) {
         const TriangleId id{i};
         const Triangle& t = mesh.triangle(id);
         if (!t.live()) continue;
@@ -137,6 +151,43 @@ std::vector<std::string> check_mesh(const Mesh& mesh, const CheckOptions& option
                         describe(uid, u, base));
             }
         }
+    }
+}
+
+}  // namespace
+
+std::vector<std::string> check_mesh(const Mesh& mesh, const CheckOptions& options) {
+    // Slices of the slots on several threads, their problems in slot order.
+    const std::uint32_t end = mesh.triangle_end();
+    const unsigned threads = std::clamp(options.threads, 1u, std::max(1u, end >> 16));
+    std::vector<Report> reports(threads, Report(options.max_problems));
+    std::vector<std::size_t> flagged(threads, 0);
+    std::vector<std::exception_ptr> failures(threads);
+    {
+        std::vector<std::jthread> pool;
+        for (unsigned i = 0; i < threads; ++i) {
+            const auto first = static_cast<std::uint32_t>(std::uint64_t{end} * i / threads);
+            const auto last = static_cast<std::uint32_t>(std::uint64_t{end} * (i + 1) / threads);
+            auto slice = [&, i, first, last] {
+                try {
+                    check_slots(mesh, options, first, last, reports[i], flagged[i]);
+                } catch (...) {
+                    failures[i] = std::current_exception();
+                }
+            };
+            if (i + 1 == threads)
+                slice();
+            else
+                pool.emplace_back(slice);
+        }
+    }
+    for (const auto& f : failures)
+        if (f) std::rethrow_exception(f);
+    Report report(options.max_problems);
+    std::size_t flagged_edges = 0;
+    for (unsigned i = 0; i < threads; ++i) {
+        report.take(reports[i]);
+        flagged_edges += flagged[i];
     }
     if (options.subsegment_table && flagged_edges != mesh.subsegments().size())
         report.add("the side table holds {} subsegments but {} edges are flagged",

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/constructions.hpp"
 #include "geometry/predicates.hpp"
 
 namespace gpdr::geometry {
@@ -67,7 +68,7 @@ EdgeStrips::Where EdgeStrips::locate(const Point& p) const {
     return odd ? Where::inside : Where::outside;
 }
 
-bool EdgeStrips::crossed(const Point& a, const Point& b) const {
+bool EdgeStrips::crossed(const Point& a, const Point& b, double margin) const {
     if (ends_.empty()) return false;
     const double y0 = std::min(a.y, b.y), y1 = std::max(a.y, b.y);
     if (y1 < lo_ || y0 > hi_) return false;
@@ -78,7 +79,11 @@ bool EdgeStrips::crossed(const Point& a, const Point& b) const {
             const double su = orient2d(a, b, u), sw = orient2d(a, b, w);
             if (!((su < 0 && sw > 0) || (su > 0 && sw < 0))) continue;
             const double sa = orient2d(u, w, a), sb = orient2d(u, w, b);
-            if ((sa < 0 && sb > 0) || (sa > 0 && sb < 0)) return true;
+            if (!((sa < 0 && sb > 0) || (sa > 0 && sb < 0))) continue;
+            if (margin <= 0) return true;
+            const Point x = segment_intersection(a, b, u, w);
+            const double m2 = margin * margin;
+            if (squared_distance(x, a) > m2 && squared_distance(x, b) > m2) return true;
         }
     return false;
 }

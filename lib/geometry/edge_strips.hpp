@@ -29,8 +29,10 @@ public:
 
     Where locate(const Point& p) const;
     // Whether some edge crosses the open segment a-b at a point interior to
-    // both (an edge through a or b, or along a-b, does not count).
-    bool crossed(const Point& a, const Point& b) const;
+    // both (an edge through a or b, or along a-b, does not count), farther
+    // than `margin` from a and from b (a crossing within rounding of an end
+    // is the end's).
+    bool crossed(const Point& a, const Point& b, double margin = 0) const;
 
 private:
     std::size_t strip(double y) const;

@@ -274,10 +274,12 @@ private:
     // A piece of a segment that no mesh edge covers must lie outside the
     // domain: its midpoint outside (not even on the boundary) and no
     // boundary edge crossing it.
-    bool outside_domain(const Point& p, const Point& q) const {
+    // A boundary edge crossing within `margin` of p or q (the segment's
+    // rounding) is taken to cross at p or q.
+    bool outside_domain(const Point& p, const Point& q, double margin = 0) const {
         const Point mid{p.x + 0.5 * (q.x - p.x), p.y + 0.5 * (q.y - p.y)};
         return boundary_->locate(mid) == geometry::EdgeStrips::Where::outside &&
-               !boundary_->crossed(p, q);
+               !boundary_->crossed(p, q, margin);
     }
 
     // The vertices on segments, compactly numbered (their order in
@@ -327,7 +329,7 @@ private:
         // Segments no vertex in use lies on: wholly outside the domain, or
         // not in the mesh at all.
         for (std::uint32_t s = 0; s < segments_.size(); ++s)
-            if (!seen[s] && !outside_domain(segments_[s].a, segments_[s].b))
+            if (!seen[s] && !outside_domain(segments_[s].a, segments_[s].b, segments_[s].tolerance))
                 problems_.add("{} lies in the domain but no mesh vertex lies on it",
                               name(segments_[s]));
     }
@@ -379,7 +381,7 @@ private:
                 std::uint32_t j = i + 1;
                 while (j + 1 < stations.size() && reach[j] <= j) ++j;
                 if (stations[i].at != stations[j].at &&
-                    !outside_domain(stations[i].at, stations[j].at))
+                    !outside_domain(stations[i].at, stations[j].at, seg.tolerance))
                     problems_.add("{} is not covered by mesh edges between {} and {}", name(seg),
                                   at(stations[i].at), at(stations[j].at));
                 covered_to = j;

@@ -88,6 +88,7 @@ double key_along(const Segment& s, const Point& p) {
 }
 
 bool on_segment(const Segment& s, const Point& p) {
+    if (p == s.a || p == s.b) return true;  // (orient2d is slowest on exact zeros)
     const double side = geometry::orient2d(s.a, s.b, p);
     if (side == 0)
         return p.x >= std::min(s.a.x, s.b.x) && p.x <= std::max(s.a.x, s.b.x) &&
@@ -101,6 +102,13 @@ bool on_segment(const Segment& s, const Point& p) {
 }
 
 bool cross_properly(const Point& a, const Point& b, const Point& c, const Point& d) {
+    // Segments whose boxes do not meet, or that share an end, do not cross
+    // at a point interior to both; both tests are cheap, and orient2d is
+    // slowest where it must prove an exact zero.
+    if (std::max(a.x, b.x) < std::min(c.x, d.x) || std::max(c.x, d.x) < std::min(a.x, b.x) ||
+        std::max(a.y, b.y) < std::min(c.y, d.y) || std::max(c.y, d.y) < std::min(a.y, b.y))
+        return false;
+    if (a == c || a == d || b == c || b == d) return false;
     const double sc = geometry::orient2d(a, b, c), sd = geometry::orient2d(a, b, d);
     if (!((sc < 0 && sd > 0) || (sc > 0 && sd < 0))) return false;
     const double sa = geometry::orient2d(c, d, a), sb = geometry::orient2d(c, d, b);
@@ -347,8 +355,8 @@ private:
             stations.push_back({seg.a, no_position, true});
         for (std::size_t k = first; k < last; ++k) {
             const Point& p = mesh_.point(VertexId{on_[k].vertex});
-            stations.push_back(
-                {p, compact(on_[k].vertex), geometry::orient2d(seg.a, seg.b, p) == 0});
+            const bool exact = p == seg.a || p == seg.b || geometry::orient2d(seg.a, seg.b, p) == 0;
+            stations.push_back({p, compact(on_[k].vertex), exact});
         }
         if (stations.back().at != seg.b) stations.push_back({seg.b, no_position, true});
         for (std::uint32_t i = 0; i < stations.size(); ++i)

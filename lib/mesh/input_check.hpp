@@ -39,7 +39,10 @@
 //              the global or its region's bound, except those refinement
 //              reports it gave up (`exempt`) and those whose shortest edge
 //              joins two segments that meet at an end of both at 60 degrees
-//              or less (the small angle is the input's).
+//              or less (the small angle is the input's).  The per-triangle
+//              bounds of an .area file (-ra) are not checked: they pass from
+//              a triangle to those that replace it, which no geometry of the
+//              input decides.
 //
 // Zero-length and duplicate segments, and the parts of segments in holes
 // or outside the domain, are not problems.  Segments are found near

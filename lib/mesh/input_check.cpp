@@ -542,30 +542,48 @@ private:
         return {range.first, range.second};
     }
 
-    // Whether u and w lie on two segments that meet at an end of both at
-    // 60 degrees or less: a small angle of the input's own, which
-    // refinement need not (and cannot always) get rid of.
+    // Whether u and w lie on two segments that meet at 60 degrees or less:
+    // at an end of both, or where one crosses or touches the other (a
+    // crossing is a vertex of the input's too).  Such a small angle is the
+    // input's own, which refinement need not (and cannot always) get rid of.
     bool at_small_input_angle(VertexId u, VertexId w) {
-        const auto su = segments_at(index(u));
-        const auto sw = segments_at(index(w));
-        for (const OnSegment& x : su)
-            for (const OnSegment& y : sw) {
+        // cos^2 >= 0.2499: up to 60.0066 degrees, so that an input meaning
+        // 60 degrees, written with a few digits, counts too.
+        const auto small = [](double px, double py, double qx, double qy, bool lines) {
+            const double dot = px * qx + py * qy;
+            return (lines || dot > 0) &&
+                   dot * dot >= 0.2499 * (px * px + py * py) * (qx * qx + qy * qy);
+        };
+        for (const OnSegment& x : segments_at(index(u)))
+            for (const OnSegment& y : segments_at(index(w))) {
                 if (x.segment == y.segment) continue;
                 const Segment &s = segments_[x.segment], &t = segments_[y.segment];
+                bool shared_end = false;
                 for (const auto& [z, p] : {std::pair{s.a, s.b}, std::pair{s.b, s.a}})
                     for (const auto& [z2, q] : {std::pair{t.a, t.b}, std::pair{t.b, t.a}}) {
                         if (!(z == z2)) continue;
-                        const double px = p.x - z.x, py = p.y - z.y, qx = q.x - z.x, qy = q.y - z.y;
-                        const double dot = px * qx + py * qy;
-                        // cos^2 >= 0.2499: up to 60.0066 degrees, so that
-                        // an input meaning 60 degrees, written with a few
-                        // digits, counts too.
-                        if (dot > 0 &&
-                            dot * dot >= 0.2499 * (px * px + py * py) * (qx * qx + qy * qy))
-                            return true;
+                        shared_end = true;
+                        if (small(p.x - z.x, p.y - z.y, q.x - z.x, q.y - z.y, false)) return true;
                     }
+                if (!shared_end && meet(s, t) &&
+                    small(s.b.x - s.a.x, s.b.y - s.a.y, t.b.x - t.a.x, t.b.y - t.a.y, true))
+                    return true;
             }
         return false;
+    }
+
+    // Whether s and t have a point in common (exact).
+    static bool meet(const Segment& s, const Segment& t) {
+        const double o1 = geometry::orient2d(s.a, s.b, t.a), o2 = geometry::orient2d(s.a, s.b, t.b);
+        const double o3 = geometry::orient2d(t.a, t.b, s.a), o4 = geometry::orient2d(t.a, t.b, s.b);
+        if ((o1 > 0 && o2 > 0) || (o1 < 0 && o2 < 0) || (o3 > 0 && o4 > 0) || (o3 < 0 && o4 < 0))
+            return false;
+        if (o1 != 0 || o2 != 0) return true;
+        // Collinear: their boxes overlap.
+        return std::max(s.a.x, s.b.x) >= std::min(t.a.x, t.b.x) &&
+               std::max(t.a.x, t.b.x) >= std::min(s.a.x, s.b.x) &&
+               std::max(s.a.y, s.b.y) >= std::min(t.a.y, t.b.y) &&
+               std::max(t.a.y, t.b.y) >= std::min(s.a.y, s.b.y);
     }
 
     void check_regions_and_bounds() {

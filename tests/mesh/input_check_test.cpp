@@ -174,3 +174,22 @@ TEST_CASE("the input check accepts crossings at rounded points, and only there",
     CHECK(mentions(p, "segment 4 (vertices 0 and 2) is not covered"));
     CHECK(mentions(p, "segment 5 (vertices 1 and 3) is not covered"));
 }
+
+TEST_CASE("the input check leaves small angles of the input's own", "[mesh][input_check]") {
+    // A wedge of 11.4 degrees at (0, 0), closed at x = 10: its one triangle
+    // is below a bound of 30 degrees only because the input is.
+    const std::vector<Point> points{{0, 0}, {10, -1}, {10, 1}};
+    const Mesh mesh = mesh_from_triangles(points, {{0, 1, 2}});
+    InputGeometry g;
+    g.points = points;
+    g.segments = {0, 1, 1, 2, 2, 0};
+    InputCheckOptions o;
+    o.min_angle = 30;
+    CHECK(all(check_against_input(mesh, g, o)).empty());
+    // Without the segment from (10, 1) to (0, 0), the short edge's ends lie
+    // only on two segments that meet at 84 degrees: the small angle is no
+    // longer the input's.
+    g.segments = {0, 1, 1, 2};
+    const auto p = check_against_input(mesh, g, o);
+    CHECK(mentions(p, "has an angle of 11.4 degrees, below the bound 30"));
+}

@@ -87,7 +87,9 @@ std::string help_text() {
            "  -l        Vertical cuts only (accepted, no effect, as -i).\n"
            "  -s        Segments by splitting (accepted, no effect: gpdr always inserts\n"
            "            segments by constrained retriangulation).\n"
-           "  -C        Check the final mesh (topology, orientation, Delaunay property).\n"
+           "  -C        Check the final mesh: topology, orientation, constrained Delaunay,\n"
+           "            and against the input (segments covered, boundary, vertices, holes,\n"
+           "            regions, bounds).  On a problem nothing is written (status 4).\n"
            "  -Q        Quiet: print no \"Wrote\" lines and no warnings.\n"
            "  -V        Verbose: print statistics; repeat (-VV, -VVV) for more.\n"
            "  -h, -H, -?\n"
@@ -121,8 +123,9 @@ std::string help_text() {
            "\n"
            "Messages: \"Wrote FILE\" lines and statistics on standard output; warnings\n"
            "and errors as \"gpdr: ...\" on standard error.  Exit status: 0 on success (and\n"
-           "for -h and for no input), 1 on any error or a failed -C check, 2 out of\n"
-           "memory, 3 an internal error (a bug in gpdr), 128+n killed by signal n.\n"
+           "for -h and for no input), 1 on any error, 2 out of memory, 3 an internal\n"
+           "error (a bug in gpdr), 4 when -C found problems (no file written), 128 + n\n"
+           "when killed by signal n.\n"
            "See gpdr(1) for the file formats and the few deliberate differences from\n"
            "Triangle.\n";
 }

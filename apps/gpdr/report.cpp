@@ -36,9 +36,9 @@ int report_result(const Options& options, const JobResult& result, std::FILE* ou
         } else {
             for (const std::string& problem : result.check_problems)
                 fmt::print(err, "gpdr: check: {}\n", problem);
-            fmt::print(err, "gpdr: check: {} problem{} found in the mesh\n",
+            fmt::print(err, "gpdr: check: {} problem{} found in the mesh; no file written\n",
                        result.check_problems.size(), result.check_problems.size() == 1 ? "" : "s");
-            status = 1;
+            status = check_failed_status;
         }
     }
 

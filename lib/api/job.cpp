@@ -3,6 +3,7 @@
 // one before and hands its result on; none reaches back.
 
 #include <chrono>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -16,10 +17,10 @@
 #include "api/memory_estimate.hpp"
 #include "api/run_stamp.hpp"
 #include "mesh/checker.hpp"
+#include "mesh/input_check.hpp"
 #include "mesh/traverse.hpp"
 #include "parallel/refine_parallel.hpp"
 #include "refine/refine.hpp"
-#include "triangulate/conformity.hpp"
 
 namespace gpdr {
 namespace {
@@ -87,6 +88,31 @@ struct Meshed {
     std::vector<std::string> quality;
 };
 
+// -C: the mesh on its own (topology, orientation, constrained Delaunay),
+// then against the input geometry and the bounds asked for (those refinement
+// was asked to meet and did not give up on; none when a limit stopped it).
+std::vector<std::string> check(const Options& options, int base,
+                               const mesh::InputGeometry& geometry, const api::Triangulated& tri,
+                               const Meshed& m) {
+    mesh::CheckOptions own;
+    own.base = base;
+    own.threads = parallel::thread_count(options.threads);
+    std::vector<std::string> problems = mesh::check_mesh(tri.mesh, own);
+    mesh::InputCheckOptions against;
+    against.base = base;
+    if (m.refining && m.refined.stopped == refine::RefineReport::Stop::none) {
+        against.min_angle = options.quality ? options.min_angle : 0;
+        against.max_area = options.area_limit ? options.max_area : 0;
+        against.regional_area = options.regional_area && !options.refine;
+        against.exempt = m.refined.given_up_triangles;
+    }
+    against.region_attributes = options.region_attributes && options.poly && !options.refine;
+    against.attribute_of_region = tri.region_attributes;
+    std::vector<std::string> more = mesh::check_against_input(tri.mesh, geometry, against);
+    problems.insert(problems.end(), more.begin(), more.end());
+    return problems;
+}
+
 // Triangulates, refines, checks (-C) and turns the mesh into arrays,
 // filling in `result`'s counts and the triangulate and refine times.  The
 // triangles are always materialised with `materialise`, else only when an
@@ -94,6 +120,9 @@ struct Meshed {
 Meshed make_mesh(const Options& options, api::Input& input, const WarningSink& warn,
                  const JobPlugins& plugins, bool materialise, JobResult& result, Stopwatch& clock) {
     Meshed m;
+    // -C compares the mesh with the input as read, not as the stages saw it.
+    std::optional<mesh::InputGeometry> geometry;
+    if (options.check) geometry = api::input_geometry(options, input);
     api::Triangulated& tri = m.tri;
     tri = api::triangulate_input(options, input, warn);  // takes the coordinates
     result.triangulate_seconds = clock.lap();
@@ -128,11 +157,7 @@ Meshed make_mesh(const Options& options, api::Input& input, const WarningSink& w
 
     if (options.check) {
         result.checked = true;
-        result.check_problems = mesh::check_mesh(tri.mesh);
-        if (tri.pslg) {
-            auto more = triangulate::check_conformity(tri.mesh, *tri.pslg, tri.cdt_report);
-            result.check_problems.insert(result.check_problems.end(), more.begin(), more.end());
-        }
+        result.check_problems = check(options, input.nodes.base, *geometry, tri, m);
     }
 
     // Neighbours cost 12 bytes per triangle: only the outputs that are
@@ -200,7 +225,9 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
     request.write_hull_poly = options.convex_hull;
     request.stamp = api::run_stamp(options.command.empty() ? "gpdr" : options.command,
                                    input.content_hash, result.vertices, result.triangles);
-    result.files_written = api::write_outputs(request, m.tri.mesh, m.arrays);
+    // A mesh -C found wrong is not written: no file is made or replaced.
+    if (!result.checked || result.check_problems.empty())
+        result.files_written = api::write_outputs(request, m.tri.mesh, m.arrays);
     result.write_seconds += clock.lap();
 
     add_statistics(result, options, m);

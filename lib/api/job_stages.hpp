@@ -19,6 +19,7 @@
 #include <gpdr/io.hpp>
 
 #include "api/mesh_arrays.hpp"
+#include "mesh/input_check.hpp"
 #include "mesh/mesh.hpp"
 #include "refine/area_bounds.hpp"
 #include "refine/refine.hpp"
@@ -44,6 +45,10 @@ Input read_input(const Options& options, const FileNames& names, const WarningSi
 // use, checked as the readers check a file (indices in range, counts that
 // agree, finite coordinates), with `input.name` for the file in messages.
 Input input_from_memory(const Options& options, MeshInput input);
+
+// -C: the input geometry the finished mesh is checked against, taken from
+// `in` before triangulate_input() takes its coordinates.
+mesh::InputGeometry input_geometry(const Options& options, const Input& in);
 
 // The mesh before refinement, and what later stages need to know about how
 // it was made.

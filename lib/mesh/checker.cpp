@@ -2,6 +2,10 @@
 
 #include "mesh/checker.hpp"
 
+#include <algorithm>
+#include <exception>
+#include <thread>
+
 #include <fmt/format.h>
 
 #include "geometry/predicates.hpp"
@@ -22,6 +26,17 @@ public:
             ++dropped_;
     }
 
+    // Appends another report's problems, as if they had been added here.
+    void take(Report& other) {
+        for (auto& p : other.problems_) {
+            if (problems_.size() < limit_)
+                problems_.push_back(std::move(p));
+            else
+                ++dropped_;
+        }
+        dropped_ += other.dropped_;
+    }
+
     std::vector<std::string> finish() {
         if (dropped_ > 0) problems_.push_back(fmt::format("... and {} more problems", dropped_));
         return std::move(problems_);
@@ -33,20 +48,28 @@ private:
     std::vector<std::string> problems_;
 };
 
-std::string describe(TriangleId id, const Triangle& t) {
-    return fmt::format("triangle {} ({}, {}, {})", index(id), index(t.v[0]), index(t.v[1]),
-                       index(t.v[2]));
+// Triangles and vertices are named by id plus `base`, as the files number
+// them (from 1, or 0 with -z).
+template <class Id>
+std::uint64_t number(Id id, int base) {
+    return std::uint64_t{index(id)} + static_cast<std::uint64_t>(base);
 }
 
-}  // namespace
+std::string describe(TriangleId id, const Triangle& t, int base) {
+    return fmt::format("triangle {} ({}, {}, {})", number(id, base), number(t.v[0], base),
+                       number(t.v[1], base), number(t.v[2], base));
+}
 
-std::vector<std::string> check_mesh(const Mesh& mesh, const CheckOptions& options) {
-    Report report(options.max_problems);
+// The checks of triangle slots [first, end): problems into `report`, and
+// the flagged edges seen (each once, from its lower triangle) counted.
+void check_slots(const Mesh& mesh, const CheckOptions& options, std::uint32_t first,
+                 std::uint32_t last, Report& report, std::size_t& flagged_edges) {
+    const int base = options.base;
+    const auto num = [base](auto id) { return number(id, base); };
     const std::uint32_t end = mesh.triangle_end();
     const std::uint32_t vertex_end = mesh.vertex_end();
-    std::size_t flagged_edges = 0;
 
-    for (std::uint32_t i = 0; i < end; ++i) {
+    for (std::uint32_t i = first; i < last; ++i) {
         const TriangleId id{i};
         const Triangle& t = mesh.triangle(id);
         if (!t.live()) continue;
@@ -55,21 +78,22 @@ std::vector<std::string> check_mesh(const Mesh& mesh, const CheckOptions& option
         for (int k = 0; k < 3; ++k) {
             const VertexId v = t.v[k];
             if (index(v) >= vertex_end) {
-                report.add("{}: corner {} is not a stored vertex", describe(id, t), k);
+                report.add("{}: corner {} is not a stored vertex", describe(id, t, base), k);
                 corners_ok = false;
             } else if (mesh.kind(v) == VertexKind::unused ||
                        mesh.kind(v) == VertexKind::duplicate) {
-                report.add("{}: corner {} is vertex {}, which is {}", describe(id, t), k, index(v),
+                report.add("{}: corner {} is vertex {}, which is {}", describe(id, t, base), k,
+                           num(v),
                            mesh.kind(v) == VertexKind::unused ? "unused" : "a duplicate left out");
             }
         }
         if (t.v[0] == t.v[1] || t.v[1] == t.v[2] || t.v[2] == t.v[0]) {
-            report.add("{}: a vertex repeats", describe(id, t));
+            report.add("{}: a vertex repeats", describe(id, t, base));
             corners_ok = false;
         }
         if (corners_ok &&
             geometry::orient2d(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2])) <= 0)
-            report.add("{}: not strictly counter-clockwise", describe(id, t));
+            report.add("{}: not strictly counter-clockwise", describe(id, t, base));
 
         for (int k = 0; k < 3; ++k) {
             const EdgeRef across = t.n[k];
@@ -80,32 +104,32 @@ std::vector<std::string> check_mesh(const Mesh& mesh, const CheckOptions& option
                     !mesh.subsegments().find(from, to))
                     report.add(
                         "{}: edge {}-{} is flagged as subsegment but missing from the side table",
-                        describe(id, t), index(from), index(to));
+                        describe(id, t, base), num(from), num(to));
                 continue;
             }
             const TriangleId uid = across.triangle();
             if (index(uid) >= end || !mesh.triangle(uid).live()) {
                 report.add("{}: neighbour across edge {}-{} is triangle {}, which is not live",
-                           describe(id, t), index(from), index(to), index(uid));
+                           describe(id, t, base), num(from), num(to), num(uid));
                 continue;
             }
             const Triangle& u = mesh.triangle(uid);
             const int j = across.edge();
             if (j > 2) {
-                report.add("{}: neighbour reference names edge {} of triangle {}", describe(id, t),
-                           j, index(uid));
+                report.add("{}: neighbour reference names edge {} of triangle {}",
+                           describe(id, t, base), j, num(uid));
                 continue;
             }
             if (u.n[j] != EdgeRef(id, k))
-                report.add("{}: neighbour {} across edge {}-{} does not link back", describe(id, t),
-                           describe(uid, u), index(from), index(to));
+                report.add("{}: neighbour {} across edge {}-{} does not link back",
+                           describe(id, t, base), describe(uid, u, base), num(from), num(to));
             if (u.v[next3(j)] != to || u.v[prev3(j)] != from)
-                report.add("{}: edge {}-{} is edge {}-{} in neighbour {}", describe(id, t),
-                           index(from), index(to), index(u.v[next3(j)]), index(u.v[prev3(j)]),
-                           describe(uid, u));
+                report.add("{}: edge {}-{} is edge {}-{} in neighbour {}", describe(id, t, base),
+                           num(from), num(to), num(u.v[next3(j)]), num(u.v[prev3(j)]),
+                           describe(uid, u, base));
             if (t.is_subsegment(k) != u.is_subsegment(j))
                 report.add("{}: edge {}-{} is a subsegment on one side only (neighbour {})",
-                           describe(id, t), index(from), index(to), describe(uid, u));
+                           describe(id, t, base), num(from), num(to), describe(uid, u, base));
             // Edge-wise checks once per edge, from the lower id.
             if (index(id) > index(uid)) continue;
             if (t.is_subsegment(k)) {
@@ -113,7 +137,7 @@ std::vector<std::string> check_mesh(const Mesh& mesh, const CheckOptions& option
                 if (options.subsegment_table && !mesh.subsegments().find(from, to))
                     report.add(
                         "{}: edge {}-{} is flagged as subsegment but missing from the side table",
-                        describe(id, t), index(from), index(to));
+                        describe(id, t, base), num(from), num(to));
             } else if (options.delaunay && corners_ok && index(u.v[j]) < vertex_end) {
                 const Point& a = mesh.point(t.v[0]);
                 const Point& b = mesh.point(t.v[1]);
@@ -123,9 +147,47 @@ std::vector<std::string> check_mesh(const Mesh& mesh, const CheckOptions& option
                     report.add(
                         "{}: edge {}-{} is not locally Delaunay: vertex {} of {} is inside the "
                         "circumcircle",
-                        describe(id, t), index(from), index(to), index(u.v[j]), describe(uid, u));
+                        describe(id, t, base), num(from), num(to), num(u.v[j]),
+                        describe(uid, u, base));
             }
         }
+    }
+}
+
+}  // namespace
+
+std::vector<std::string> check_mesh(const Mesh& mesh, const CheckOptions& options) {
+    // Slices of the slots on several threads, their problems in slot order.
+    const std::uint32_t end = mesh.triangle_end();
+    const unsigned threads = std::clamp(options.threads, 1u, std::max(1u, end >> 16));
+    std::vector<Report> reports(threads, Report(options.max_problems));
+    std::vector<std::size_t> flagged(threads, 0);
+    std::vector<std::exception_ptr> failures(threads);
+    {
+        std::vector<std::jthread> pool;
+        for (unsigned i = 0; i < threads; ++i) {
+            const auto first = static_cast<std::uint32_t>(std::uint64_t{end} * i / threads);
+            const auto last = static_cast<std::uint32_t>(std::uint64_t{end} * (i + 1) / threads);
+            auto slice = [&, i, first, last] {
+                try {
+                    check_slots(mesh, options, first, last, reports[i], flagged[i]);
+                } catch (...) {
+                    failures[i] = std::current_exception();
+                }
+            };
+            if (i + 1 == threads)
+                slice();
+            else
+                pool.emplace_back(slice);
+        }
+    }
+    for (const auto& f : failures)
+        if (f) std::rethrow_exception(f);
+    Report report(options.max_problems);
+    std::size_t flagged_edges = 0;
+    for (unsigned i = 0; i < threads; ++i) {
+        report.take(reports[i]);
+        flagged_edges += flagged[i];
     }
     if (options.subsegment_table && flagged_edges != mesh.subsegments().size())
         report.add("the side table holds {} subsegments but {} edges are flagged",

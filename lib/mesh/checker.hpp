@@ -31,6 +31,8 @@ struct CheckOptions {
     bool delaunay = true;
     bool subsegment_table = true;
     std::size_t max_problems = 100;
+    int base = 0;          // added to triangle and vertex ids in the problems
+    unsigned threads = 1;  // slices of the triangles checked side by side
 };
 
 std::vector<std::string> check_mesh(const Mesh& mesh, const CheckOptions& options = {});

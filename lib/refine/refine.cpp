@@ -567,6 +567,8 @@ void count_left_in(const mesh::Mesh& mesh, const RefineRun& run,
             continue;
         }
         const std::uint8_t reason = give_up_reason(given_up, id, t.generation);
+        if (reason == reason_no_split || reason == reason_precision)
+            report.given_up_triangles.push_back(id);
         if (reason == reason_no_split)
             ++report.left_no_split;
         else if (reason == reason_precision)
@@ -589,6 +591,8 @@ void count_given_up(const mesh::Mesh& mesh, std::span<const LeafRefiner::GivenUp
         if (!t.live()) continue;
         const std::uint8_t reason =
             give_up_reason(given_up.first(j + 1), given_up[j].id, t.generation);
+        if (reason == reason_no_split || reason == reason_precision)
+            report.given_up_triangles.push_back(given_up[j].id);
         if (reason == reason_no_split)
             ++report.left_no_split;
         else if (reason == reason_precision)
@@ -637,6 +641,8 @@ void count_left(const mesh::Mesh& mesh, const RefineRun& run,
         report.left_budget += p.left_budget;
         report.left_other += p.left_other;
         report.encroached_left += p.encroached_left;
+        report.given_up_triangles.insert(report.given_up_triangles.end(),
+                                         p.given_up_triangles.begin(), p.given_up_triangles.end());
     }
     if (!full) count_given_up(mesh, given_up, report);
 }

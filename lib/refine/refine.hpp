@@ -136,6 +136,8 @@ struct RefineReport {
     std::uint64_t left_other = 0;   // poor for no recorded reason (a bug if non-zero)
     // Encroached subsegments left unsplit (-Y/-YY, budget, too short).
     std::uint64_t encroached_left = 0;
+    // The triangles counted in left_no_split and left_precision, by id.
+    std::vector<mesh::TriangleId> given_up_triangles;
 
     std::vector<NewVertex> new_vertices;  // if RefineSettings::record_new_vertices
 };

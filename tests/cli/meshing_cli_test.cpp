@@ -210,8 +210,8 @@ void mesh_every_sample(const std::filesystem::path& folder) {
     for (const auto& entry : std::filesystem::directory_iterator(folder)) {
         const std::string name = entry.path().filename().string();
         if (entry.path().extension() != ".poly") continue;
-        for (const char* switches :
-             {"-pCQ", "-pcCQ", "-pDCQ", "-pcDCQ", "-pOCQ", "-pACQ", "-pcqCQ", "-pqa0.5CQ"}) {
+        for (const char* switches : {"-pCQ", "-pcCQ", "-pDCQ", "-pcDCQ", "-pOCQ", "-pACQ", "-pcqCQ",
+                                     "-pqa0.5CQ", "-pq30CQ"}) {
             DYNAMIC_SECTION(name << " " << switches) {
                 TempDir dir;
                 std::filesystem::copy(entry.path(), dir / name);

@@ -117,3 +117,37 @@ TEST_CASE("the checker caps its list of problems", "[mesh][checker]") {
     REQUIRE(problems.size() == 4);
     CHECK_THAT(problems.back(), Catch::StartsWith("... and"));
 }
+
+TEST_CASE("the checker finds the same problems on several threads", "[mesh][checker]") {
+    // A grid of 260 x 260 squares, two triangles each: three chunks of slots.
+    const std::uint32_t n = 260;
+    std::vector<Point> points;
+    for (std::uint32_t y = 0; y <= n; ++y)
+        for (std::uint32_t x = 0; x <= n; ++x) points.push_back({double(x), double(y)});
+    std::vector<Tri> triangles;
+    for (std::uint32_t y = 0; y < n; ++y)
+        for (std::uint32_t x = 0; x < n; ++x) {
+            const std::uint32_t a = y * (n + 1) + x, b = a + 1, c = a + n + 2, d = a + n + 1;
+            triangles.push_back({a, b, c});
+            triangles.push_back({a, c, d});
+        }
+    Mesh mesh = mesh_from_triangles(points, triangles);
+    REQUIRE(mesh.triangle_end() >= 3u << 16);
+    // Damage spread over the slots: clockwise triangles.
+    for (const std::uint32_t i : {5u, 70000u, 100000u, 135000u}) {
+        Triangle& t = mesh.triangle(TriangleId{i});
+        std::swap(t.v[0], t.v[1]);
+    }
+    CheckOptions one;
+    one.subsegment_table = false;
+    CheckOptions three = one;
+    three.threads = 3;
+    const auto expected = check_mesh(mesh, one);
+    CHECK(mentions(expected, "triangle 135000 "));
+    CHECK(check_mesh(mesh, three) == expected);
+    one.max_problems = three.max_problems = 3;
+    const auto few = check_mesh(mesh, one);
+    CHECK(few.back().find("more problems") != std::string::npos);
+    CHECK(check_mesh(mesh, three) == few);
+    CHECK(check_mesh(four(), three).empty());
+}

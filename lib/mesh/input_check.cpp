@@ -572,8 +572,28 @@ private:
         return false;
     }
 
-    // Whether s and t have a point in common (exact).
+    // Whether an end of t lies within rounding distance of s's interior (the
+    // arrangement's rule for a vertex on a segment: 1e-12 of s's length
+    // plus 16 ulps of the vertex's coordinates).
+    static bool end_near(const Segment& s, const Segment& t) {
+        const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
+        const double length2 = dx * dx + dy * dy;
+        if (length2 == 0) return false;
+        for (const Point& p : {t.a, t.b}) {
+            const double along = (p.x - s.a.x) * dx + (p.y - s.a.y) * dy;
+            if (along <= 0 || along >= length2) continue;
+            const double near =
+                1e-12 * std::sqrt(length2) + 16 * 0x1p-53 * std::max(std::abs(p.x), std::abs(p.y));
+            const double off = std::abs(geometry::orient2d(s.a, s.b, p));
+            if (off <= near * std::sqrt(length2)) return true;
+        }
+        return false;
+    }
+
+    // Whether s and t have a point in common (exact), or one's end lies on
+    // the other within rounding.
     static bool meet(const Segment& s, const Segment& t) {
+        if (end_near(s, t) || end_near(t, s)) return true;
         const double o1 = geometry::orient2d(s.a, s.b, t.a), o2 = geometry::orient2d(s.a, s.b, t.b);
         const double o3 = geometry::orient2d(t.a, t.b, s.a), o4 = geometry::orient2d(t.a, t.b, s.b);
         if ((o1 > 0 && o2 > 0) || (o1 < 0 && o2 < 0) || (o3 > 0 && o4 > 0) || (o3 < 0 && o4 < 0))

@@ -175,7 +175,15 @@ bool small_angle_protected(const mesh::Mesh& mesh, mesh::TriangleId t, int k,
             const Point& o = mesh.point(su[i]);
             const double du = geometry::squared_distance(o, mesh.point(u));
             const double dw = geometry::squared_distance(o, mesh.point(w));
-            if (du < 1.001 * dw && du > 0.999 * dw) return true;
+            if (!(du < 1.001 * dw && du > 0.999 * dw)) continue;
+            // Only an angle below 60 degrees needs it: at 60 and above,
+            // splitting on concentric shells ends by itself, and the bound
+            // is reached.  cos(angle) > 1/2, without roots.
+            const Point& fu = mesh.point(su[1 - i]);
+            const Point& fw = mesh.point(sw[1 - j]);
+            const double ax = fu.x - o.x, ay = fu.y - o.y, bx = fw.x - o.x, by = fw.y - o.y;
+            const double dot = ax * bx + ay * by;
+            if (dot > 0 && 4 * dot * dot > (ax * ax + ay * ay) * (bx * bx + by * by)) return true;
         }
     }
     return false;

@@ -13,9 +13,11 @@
 //     for triangular mesh generation", 2002, as Triangle applies it): a
 //     skinny triangle is left alone when both ends of its shortest edge are
 //     segment vertices lying on two different segments that share an input
-//     vertex, at equal distance from it (within 0.1% in squared distance).
-//     Concentric-shell splitting puts them exactly there, and such a
-//     triangle's small angle is forced by the input angle.
+//     vertex, at equal distance from it (within 0.1% in squared distance),
+//     and meeting there at less than 60 degrees.  Concentric-shell
+//     splitting puts them exactly there, and such a triangle's small angle
+//     is forced by the input angle; at 60 degrees and above the bound is
+//     reachable and nothing is left.
 
 #include <array>
 #include <cstdint>

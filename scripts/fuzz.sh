@@ -39,16 +39,24 @@ for t in "${targets[@]}"; do
   dir="$work/$t"
   mkdir -p "$dir/corpus" "$dir/crashes"
   echo "fuzz.sh: $t for $seconds s (new inputs: $dir/corpus, crashes: $dir/crashes)"
+  before=$(find "$dir/crashes" -type f | wc -l)
   # shellcheck disable=SC2086
   if "$root/build-asan/tests/fuzz/fuzz_$t" -max_total_time="$seconds" -timeout=10 \
       -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$dir/crashes/" \
       ${FUZZ_ARGS:-} "$dir/corpus" "$root/tests/fuzz/corpus/$t" >"$dir/log" 2>&1; then
     status=ok
   else
-    status="FOUND SOMETHING, see $dir/crashes and $dir/log"
+    status=failed
+  fi
+  # With -ignore_crashes (fork mode) libFuzzer goes on and exits 0.
+  new=$(($(find "$dir/crashes" -type f | wc -l) - before))
+  if [ "$status" = failed ] || [ "$new" -gt 0 ]; then
+    status="FOUND SOMETHING: $new new file(s) in $dir/crashes, see $dir/log"
     found=1
   fi
-  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$dir/log" | tail -1)
+  # The run count: the final statistics, or fork mode's last "#N:" line.
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p; s/^#\([0-9]*\): cov.*/\1/p' \
+    "$dir/log" | tail -1)
   echo "fuzz.sh: $t: ${runs:-?} runs, $status"
 done
 exit "$found"

@@ -32,7 +32,7 @@
 // A count larger than the bytes that follow is cut to what is there.
 //
 // Every run carries -S with a small Steiner point budget and one thread, so
-// each run takes milliseconds and is the same on every machine.
+// that refinement cannot run away and a run does the same on every machine.
 
 #include <cstddef>
 #include <cstdint>

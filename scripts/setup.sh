@@ -10,7 +10,10 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 # pkg-config and locales (localedef's sources): the library's tests.
-packages=(cmake make gcc g++ libcli11-dev libfmt-dev catch2 libgmp-dev pkg-config locales)
+# clang and its runtimes (libFuzzer, the sanitizers): the shared sanitizer
+# build with the fuzz targets (scripts/asan-build.sh).
+packages=(cmake make gcc g++ libcli11-dev libfmt-dev catch2 libgmp-dev pkg-config locales clang
+  libclang-rt-14-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -92,9 +92,17 @@ public:
     }
 
 private:
+    // Stops once every allocated chunk is freed: a small mesh holds a few
+    // chunks of a table reserved for millions, and a sanitizer's free()
+    // costs a stack trace even for a null pointer.
     void release() {
         if (!chunks_) return;
-        for (std::uint32_t c = 0; c < MaxChunks; ++c) std::free(chunks_[c].exchange(nullptr));
+        std::size_t left = allocated_.load(std::memory_order_relaxed);
+        for (std::uint32_t c = 0; c < MaxChunks && left > 0; ++c)
+            if (T* chunk = chunks_[c].exchange(nullptr)) {
+                std::free(chunk);
+                --left;
+            }
         allocated_ = 0;
     }
 

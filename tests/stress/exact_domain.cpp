@@ -3,6 +3,7 @@
 #include <gmpxx.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <numeric>
 #include <utility>
@@ -39,9 +40,26 @@ private:
     std::vector<std::size_t> parent_;
 };
 
+// Whether p lies on segment a-b: exactly, or, as gpdr's documented rule
+// has it (docs/architecture.md, "Crossings, overlaps and vertices on
+// segments"), within rounding distance of its interior: 1e-12 of its length
+// plus 16 ulps of p's coordinates.  Such a vertex was meant to be on the
+// segment, and its decimal coordinates missed; the segment bends through it.
 bool on_closed_segment(const Point& a, const Point& b, const Point& p) {
-    return orient2d(a, b, p) == 0 && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) &&
-           std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
+    const double o = orient2d(a, b, p);
+    if (o == 0)
+        return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) &&
+               std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const double length2 = dx * dx + dy * dy;
+    const double along = (p.x - a.x) * dx + (p.y - a.y) * dy;
+    if (along <= 0 || along >= length2) return false;
+    const double length = std::sqrt(length2);
+    const double near = 1e-12 * length + 16 * 0x1p-53 * std::max(std::abs(p.x), std::abs(p.y));
+    if (std::abs(o) > near * length) return false;
+    const double to_a = (p.x - a.x) * (p.x - a.x) + (p.y - a.y) * (p.y - a.y);
+    const double to_b = (p.x - b.x) * (p.x - b.x) + (p.y - b.y) * (p.y - b.y);
+    return to_a > near * near && to_b > near * near;
 }
 
 bool opposite(double u, double v) { return (u > 0 && v < 0) || (u < 0 && v > 0); }

@@ -623,7 +623,16 @@ private:
                         &c = mesh_.point(t.v[2]);
             std::uint32_t region = no_region;
             if (faces) region = region_of_face_[find(i)];
-            if (options_.region_attributes && region != ambiguous) {
+            // A sliver whose corners are within rounding of one line (an
+            // input vertex on a hull edge or segment, as its decimal
+            // coordinates meant) may be cut off as a face of its own here
+            // while the mesh spreads its neighbour's region into it: it has
+            // no area to disagree about.
+            const double longest = std::max({geometry::squared_distance(a, b),
+                                             geometry::squared_distance(b, c),
+                                             geometry::squared_distance(c, a)});
+            const bool sliver = std::abs(geometry::orient2d(a, b, c)) <= 1e-12 * longest;
+            if (options_.region_attributes && region != ambiguous && !sliver) {
                 const double want = region == no_region ? 0.0 : input_.regions[region].attribute;
                 if (t.region >= options_.attribute_of_region.size())
                     problems_.add("the triangle {} {} {} has no attribute", at(a), at(b), at(c));

@@ -58,8 +58,6 @@ struct KnownFailure {
     const char* why;
 };
 constexpr KnownFailure known_failures[] = {
-    {200054, "-pc",
-     "with -c and regions, -C's faces and gpdr's region spreading disagree on one triangle"},
     {400026, "-pq30",
      "a 20.4-degree triangle left without a precision report beside a near-crossing"},
 };

@@ -628,9 +628,9 @@ private:
             // coordinates meant) may be cut off as a face of its own here
             // while the mesh spreads its neighbour's region into it: it has
             // no area to disagree about.
-            const double longest = std::max({geometry::squared_distance(a, b),
-                                             geometry::squared_distance(b, c),
-                                             geometry::squared_distance(c, a)});
+            const double longest =
+                std::max({geometry::squared_distance(a, b), geometry::squared_distance(b, c),
+                          geometry::squared_distance(c, a)});
             const bool sliver = std::abs(geometry::orient2d(a, b, c)) <= 1e-12 * longest;
             if (options_.region_attributes && region != ambiguous && !sliver) {
                 const double want = region == no_region ? 0.0 : input_.regions[region].attribute;

@@ -458,9 +458,25 @@ private:
 
     void check_holes() {
         for (std::size_t h = 0; h < input_.holes.size(); ++h)
-            if (boundary_->locate(input_.holes[h]) == geometry::EdgeStrips::Where::inside)
+            if (boundary_->locate(input_.holes[h]) == geometry::EdgeStrips::Where::inside &&
+                !on_input(input_.holes[h]))
                 problems_.add("hole {} at {} lies inside a triangle", h + options_.base,
                               at(input_.holes[h]));
+    }
+
+    // Whether p lies exactly on an input vertex or segment: a hole point
+    // there eats nothing, as in Triangle.  (A scan, run only for a hole
+    // point found inside the mesh, which a right mesh never has.)
+    bool on_input(const Point& p) const {
+        for (const Point& q : input_.points)
+            if (q == p) return true;
+        for (const Segment& s : segments_) {
+            if (s.hull || geometry::orient2d(s.a, s.b, p) != 0) continue;
+            if (std::min(s.a.x, s.b.x) <= p.x && p.x <= std::max(s.a.x, s.b.x) &&
+                std::min(s.a.y, s.b.y) <= p.y && p.y <= std::max(s.a.y, s.b.y))
+                return true;
+        }
+        return false;
     }
 
     // ---- regions and bounds ---------------------------------------------

@@ -244,7 +244,10 @@ public:
         std::vector<std::uint32_t> met(pieces_.size(), no_piece);
         for (std::uint32_t i = 0; i < pieces_.size(); ++i) {
             const SegmentPiece& s = pieces_[i];
-            grid.for_each_cell(points_[s.a], points_[s.b], [&](std::size_t c) {
+            // Copies: a crossing found inside appends to points_, which may
+            // move it.
+            const Point a = points_[s.a], b = points_[s.b];
+            grid.for_each_cell(a, b, [&](std::size_t c) {
                 for (const std::uint32_t j : grid.pieces_in(c)) {
                     if (j <= i || met[j] == i) continue;
                     met[j] = i;

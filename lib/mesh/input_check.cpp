@@ -388,10 +388,16 @@ private:
                 // resumes, and require the gap to lie outside the domain.
                 std::uint32_t j = i + 1;
                 while (j + 1 < stations.size() && reach[j] <= j) ++j;
-                if (stations[i].at != stations[j].at &&
-                    !outside_domain(stations[i].at, stations[j].at, seg.tolerance))
+                // Station by station: a mesh vertex in the gap (a corner of
+                // the boundary there) is not itself outside.
+                for (std::uint32_t k = i; k < j; ++k) {
+                    if (stations[k].at == stations[k + 1].at ||
+                        outside_domain(stations[k].at, stations[k + 1].at, seg.tolerance))
+                        continue;
                     problems_.add("{} is not covered by mesh edges between {} and {}", name(seg),
-                                  at(stations[i].at), at(stations[j].at));
+                                  at(stations[k].at), at(stations[k + 1].at));
+                    break;
+                }
                 covered_to = j;
                 i = j - 1;
                 continue;

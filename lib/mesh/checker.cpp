@@ -1,6 +1,7 @@
 // The invariant checker (see checker.hpp for what it checks).
 
 #include "mesh/checker.hpp"
+#include "mesh/problem_list.hpp"
 
 #include <algorithm>
 #include <exception>
@@ -14,39 +15,7 @@ namespace gpdr::mesh {
 
 namespace {
 
-class Report {
-public:
-    explicit Report(std::size_t limit) : limit_(limit) {}
-
-    template <class... Args>
-    void add(fmt::format_string<Args...> format, Args&&... args) {
-        if (problems_.size() < limit_)
-            problems_.push_back(fmt::format(format, std::forward<Args>(args)...));
-        else
-            ++dropped_;
-    }
-
-    // Appends another report's problems, as if they had been added here.
-    void take(Report& other) {
-        for (auto& p : other.problems_) {
-            if (problems_.size() < limit_)
-                problems_.push_back(std::move(p));
-            else
-                ++dropped_;
-        }
-        dropped_ += other.dropped_;
-    }
-
-    std::vector<std::string> finish() {
-        if (dropped_ > 0) problems_.push_back(fmt::format("... and {} more problems", dropped_));
-        return std::move(problems_);
-    }
-
-private:
-    std::size_t limit_;
-    std::size_t dropped_ = 0;
-    std::vector<std::string> problems_;
-};
+using Report = ProblemList;
 
 // Triangles and vertices are named by id plus `base`, as the files number
 // them (from 1, or 0 with -z).

@@ -17,6 +17,7 @@
 //      reads what 1-5 found.
 
 #include "mesh/input_check.hpp"
+#include "mesh/problem_list.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -39,28 +40,7 @@ namespace {
 
 using geometry::Point;
 
-class Problems {
-public:
-    explicit Problems(std::size_t limit) : limit_(limit) {}
-
-    template <class... Args>
-    void add(fmt::format_string<Args...> format, Args&&... args) {
-        if (problems_.size() < limit_)
-            problems_.push_back(fmt::format(format, std::forward<Args>(args)...));
-        else
-            ++dropped_;
-    }
-
-    std::vector<std::string> finish() {
-        if (dropped_ > 0) problems_.push_back(fmt::format("... and {} more problems", dropped_));
-        return std::move(problems_);
-    }
-
-private:
-    std::size_t limit_;
-    std::size_t dropped_ = 0;
-    std::vector<std::string> problems_;
-};
+using Problems = ProblemList;
 
 std::string at(const Point& p) { return fmt::format("({}, {})", p.x, p.y); }
 

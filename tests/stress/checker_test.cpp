@@ -67,6 +67,31 @@ TEST_CASE("stress checker: the exact domain", "[stress][checker]") {
         (std::filesystem::path(GPDR_SOURCE_DIR) / "tests/data/crossings/a.poly").string(),
         gpdr::ignore_warning);
     CHECK(ExactDomain(a.data, false).area() == Approx(3.025).epsilon(1e-12));
+
+    // A segment bends through a vertex within rounding of it, and a third
+    // segment crosses the pieces, not the straight segment.  Here the
+    // vertex (0.3, 0.5) lies 1e-17 off the segment from (0, 0.6) to
+    // (0.6, 0.4), whose second half another segment repeats; with the
+    // straight segment, the crossing segment x = 0.4 would close a sliver
+    // between the two, and the open chain would enclose a face.
+    gpdr::PolyFile bent;
+    bent.nodes.xy = {0.30000000000000004,
+                     0.5,
+                     0,
+                     0.60000000000000009,
+                     0.60000000000000009,
+                     0.40000000000000002,
+                     0.4,
+                     0.5,
+                     0.4,
+                     0.30000000000000004};
+    bent.segments.endpoints = {1, 2, 2, 0, 3, 4};
+    const ExactDomain open_chain(bent, false);
+    CHECK(open_chain.area() == 0);
+    CHECK(open_chain.required_vertices().empty());
+    std::size_t bent_crossings = 0;
+    for (const ArrangementPoint& p : open_chain.points()) bent_crossings += p.crossing;
+    CHECK(bent_crossings == 1);
 }
 
 TEST_CASE("stress checker: right and wrong meshes", "[stress][checker]") {

@@ -94,11 +94,30 @@ ExactDomain::ExactDomain(const PolyFile& poly, bool convex_hull_enclosed) {
         return Point{poly.nodes.xy[2 * v], poly.nodes.xy[2 * v + 1]};
     };
 
+    // Each segment bends through the vertices within rounding of it, so its
+    // lines are the pieces between them, in order along it: crossings are
+    // then found with the pieces, as gpdr finds them, and a crossing of the
+    // straight segment a hair away from a piece's does not make a sliver face.
     for (std::size_t s = 0; s < poly.segments.size(); ++s) {
         const Point a = vertex(poly.segments.endpoints[2 * s]);
         const Point b = vertex(poly.segments.endpoints[2 * s + 1]);
         if (a == b) continue;
-        lines_.push_back(Line{a.x, a.y, b.x, b.y, static_cast<int>(s)});
+        std::vector<Point> stops;
+        for (std::uint32_t v = 0; v < vertex_count; ++v) {
+            const Point p = vertex(v);
+            if (p != a && p != b && on_closed_segment(a, b, p)) stops.push_back(p);
+        }
+        const double dx = b.x - a.x, dy = b.y - a.y;
+        std::sort(stops.begin(), stops.end(), [&](const Point& p, const Point& q) {
+            return (p.x - a.x) * dx + (p.y - a.y) * dy < (q.x - a.x) * dx + (q.y - a.y) * dy;
+        });
+        stops.erase(std::unique(stops.begin(), stops.end()), stops.end());
+        stops.push_back(b);
+        Point from = a;
+        for (const Point& to : stops) {
+            lines_.push_back(Line{from.x, from.y, to.x, to.y, static_cast<int>(s)});
+            from = to;
+        }
     }
     if (convex_hull_enclosed) {
         std::vector<Point> all;

@@ -6,6 +6,7 @@
 //   stress_pslg --mesher PATH [--triangle] [--count N] [--first-seed S]
 //               [--threads "1 2"] [--time-limit SECONDS] [--keep FOLDER]
 //               [--verbose] [--strict-angles] SWITCHES...
+//   stress_pslg --mesher PATH [--triangle] --input FILE.poly SWITCHES...
 //
 // Every switch set meshes the same inputs (seeds S .. S+N-1).  gpdr runs each
 // set once per thread count (-jN); --triangle runs Triangle, once per set.
@@ -14,6 +15,8 @@
 // such seed and reason as it happens.  Progress goes to stderr.
 // --strict-angles counts as wrong the small angles opposite an edge that
 // spans a sharp input angle (mesh_check.hpp), which Triangle leaves too.
+// --input meshes one .poly (such as one kept by --keep) instead of random
+// inputs, and prints its verdict and why for each switch set and thread count.
 
 #include <cstdio>
 #include <cstdlib>
@@ -23,6 +26,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <gpdr/io.hpp>
 
 #include "stress/random_pslg.hpp"
 #include "stress/stress_case.hpp"
@@ -36,7 +41,7 @@ namespace {
     std::fprintf(stderr,
                  "stress_pslg: %s\nusage: stress_pslg --mesher PATH [--triangle] [--count N] "
                  "[--first-seed S] [--threads \"1 2\"] [--time-limit SECONDS] [--keep FOLDER] "
-                 "[--verbose] [--strict-angles] SWITCHES...\n",
+                 "[--verbose] [--strict-angles] [--input FILE.poly] SWITCHES...\n",
                  reason);
     std::exit(2);
 }
@@ -55,7 +60,7 @@ int main(int argc, char** argv) {
     std::uint64_t first_seed = 1;
     std::vector<int> threads{1, 2};
     double time_limit = 10;
-    std::string keep;
+    std::string keep, input;
     bool verbose = false, strict_angles = false;
     std::vector<std::string> switch_sets;
     for (int i = 1; i < argc; ++i) {
@@ -76,6 +81,8 @@ int main(int argc, char** argv) {
             time_limit = std::stod(value());
         else if (arg == "--keep")
             keep = value();
+        else if (arg == "--input")
+            input = value();
         else if (arg == "--verbose")
             verbose = true;
         else if (arg == "--strict-angles")
@@ -98,6 +105,22 @@ int main(int argc, char** argv) {
     char scratch_template[] = "/tmp/stress-pslg-XXXXXX";
     const char* scratch = mkdtemp(scratch_template);
     if (!scratch) usage("cannot make a scratch folder in /tmp");
+
+    if (!input.empty()) {
+        const gpdr::PolyFile poly = gpdr::io::read_poly(input, [](const gpdr::Warning&) {}).data;
+        for (const std::string& switches : switch_sets)
+            for (int t : threads) {
+                const Outcome outcome =
+                    run_case(mesher, RunSpec{switches, t, time_limit, strict_angles}, poly,
+                             "from " + input, scratch);
+                std::printf("%s%s: %s%s%s\n", switches.c_str(),
+                            t > 0 ? (" -j" + std::to_string(t)).c_str() : "",
+                            verdict_name(outcome.verdict), outcome.detail.empty() ? "" : ": ",
+                            outcome.detail.c_str());
+            }
+        fs::remove_all(scratch);
+        return 0;
+    }
 
     std::printf(
         "| mesher | switches | family | inputs | wrong | failed | hung | seeds (wrong / failed / "

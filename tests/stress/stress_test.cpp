@@ -49,25 +49,6 @@ TEST_CASE("crossing reproducers", "[stress]") {
     }
 }
 
-// Inputs of the suite's seeds that gpdr is known to mesh wrong, each with
-// what is wrong.  Each must still fail (so that a fix shows here and the
-// entry goes); every other input must be right.
-struct KnownFailure {
-    std::uint64_t seed;
-    const char* switches;
-    const char* why;
-};
-constexpr KnownFailure known_failures[] = {
-    {400026, "-pq30",
-     "a 20.4-degree triangle left without a precision report beside a near-crossing"},
-};
-
-bool known_to_fail(std::uint64_t seed, const std::string& switches) {
-    for (const KnownFailure& k : known_failures)
-        if (k.seed == seed && switches == k.switches) return true;
-    return false;
-}
-
 // Each switch set meshes its own seeds, with one worker thread and with two.
 // An input that is not right is written to GPDR_STRESS_FAILURES, named by
 // its switches, thread count and seed, and the failure names the file.
@@ -102,10 +83,7 @@ TEST_CASE("random PSLGs", "[stress]") {
                 INFO("seed " << seed << " (" << family_name(pslg.family) << "), " << command << ": "
                              << verdict_name(outcome.verdict) << ": " << outcome.detail
                              << "\n  input: " << kept);
-                if (known_to_fail(seed, switches))
-                    CHECK(outcome.verdict != Verdict::right);  // fixed: remove its entry
-                else
-                    CHECK(outcome.verdict == Verdict::right);
+                CHECK(outcome.verdict == Verdict::right);
             }
         }
     }

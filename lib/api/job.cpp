@@ -134,9 +134,6 @@ Meshed make_mesh(const Options& options, api::Input& input, const WarningSink& w
         settings.criteria.triangle_max_area = tri.area_bounds.get();
         settings.criteria.diametral_circles = options.conforming_delaunay;
         settings.segment_ends = tri.segment_ends;
-        // Each record costs 40 bytes per new vertex: keep them only when
-        // there are vertex attributes to interpolate.
-        settings.record_new_vertices = input.nodes.data.attribute_count > 0;
         // -S counts every vertex gpdr adds, as Triangle's does: those -D
         // added, and those where segments cross.
         const std::uint64_t added = tri.steiner_points + tri.cdt_report.new_vertices.size();
@@ -149,9 +146,6 @@ Meshed make_mesh(const Options& options, api::Input& input, const WarningSink& w
             api::memory_available());
         m.parallel_lines = api::refine(tri.mesh, settings, options, m.refined);
         api::warn_after_refinement(m.refined, warn);
-        tri.new_vertices.insert(tri.new_vertices.end(), m.refined.new_vertices.begin(),
-                                m.refined.new_vertices.end());
-        m.refined.new_vertices = {};
     }
     result.refine_seconds = clock.lap();
 
@@ -167,9 +161,8 @@ Meshed make_mesh(const Options& options, api::Input& input, const WarningSink& w
     // The triangle array itself only for what is derived from it.
     materialise = materialise || neighbours || options.jettison;
     m.arrays = api::mesh_to_arrays(tri.mesh, std::move(input.nodes.data), result.input_vertices,
-                                   tri.new_vertices, tri.triangle_attribute_count,
-                                   tri.region_attributes, neighbours, materialise);
-    tri.new_vertices = {};
+                                   tri.triangle_attribute_count, tri.region_attributes, neighbours,
+                                   materialise);
     result.vertices = m.arrays.nodes.size() - tri.duplicates;
     result.triangles = m.arrays.triangle_count;
     result.hull_edges = mesh::count_hull_edges(tri.mesh);

@@ -56,8 +56,6 @@ struct Triangulated {
     mesh::Mesh mesh;
     std::uint64_t duplicates = 0;      // input vertices left out
     std::uint64_t steiner_points = 0;  // vertices -D added
-    // Vertices added on segments so far, for attribute interpolation.
-    std::vector<refine::NewVertex> new_vertices;
     // Input segment ends (2 per segment), for refinement's small-angle rule.
     std::vector<mesh::VertexId> segment_ends;
     // Triangle attributes by region index (Triangle::region):
@@ -86,21 +84,18 @@ void warn_after_refinement(const refine::RefineReport& report, const WarningSink
 
 // The finished mesh as arrays.  `nodes` are the input vertices (ids 0..n-1 of
 // the mesh; attributes and markers kept); the vertices the mesh added after
-// them follow in id order, skipping ids claimed but never used, with their
-// attributes interpolated from `added` (refinement's record of each new
-// vertex: on a subsegment, or in a triangle).  Vertex markers follow Triangle: a non-zero input
-// marker is kept, otherwise a vertex on a subsegment takes its marker, otherwise a vertex on the
-// boundary gets 1 and any other 0. Triangles get `attribute_count` attributes each from
-// `region_attributes` by their region index.  The neighbour array is filled only when asked for;
-// without `materialise` the triangles stay in the mesh, which must then
-// outlive the arrays (MeshArrays::stream), and so must region_attributes.
-// The coordinates of all vertices come from the mesh, which keeps the input
-// ones exactly: the caller may free nodes.xy once the mesh is built, as long
-// as the other arrays of `nodes` keep their input_count entries.
+// them follow in id order, skipping ids claimed but never used, with the
+// attributes the mesh keeps for them (mesh/vertex_attributes.hpp).  Vertex markers follow Triangle:
+// a non-zero input marker is kept, otherwise a vertex on a subsegment takes its marker, otherwise a
+// vertex on the boundary gets 1 and any other 0. Triangles get `attribute_count` attributes each
+// from `region_attributes` by their region index.  The neighbour array is filled only when asked
+// for; without `materialise` the triangles stay in the mesh, which must then outlive the arrays
+// (MeshArrays::stream), and so must region_attributes. The coordinates of all vertices come from
+// the mesh, which keeps the input ones exactly: the caller may free nodes.xy once the mesh is
+// built, as long as the other arrays of `nodes` keep their input_count entries.
 MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t input_count,
-                          std::span<const refine::NewVertex> added, std::uint32_t attribute_count,
-                          std::span<const double> region_attributes, bool with_neighbours,
-                          bool materialise);
+                          std::uint32_t attribute_count, std::span<const double> region_attributes,
+                          bool with_neighbours, bool materialise);
 
 // The marker of mesh edge {a, b} (Triangle's rules): a subsegment's own
 // marker if non-zero, else 1 on the boundary, else 0.

@@ -62,8 +62,7 @@ MemoryEstimate estimate_memory(const Options& o, const mesh::Mesh& mesh,
     const bool neighbours =
         o.write_neighbours || o.write_edges || o.write_voronoi || o.write_off || o.order == 2;
     double per_triangle = neighbours ? bytes_per_triangle_with_neighbours : bytes_per_triangle;
-    if (vertex_attributes > 0)
-        per_triangle += 0.5 * (bytes_per_new_vertex_record + 16.0 * vertex_attributes);
+    if (vertex_attributes > 0) per_triangle += 0.5 * 16.0 * vertex_attributes;
     e.bytes = e.triangles * per_triangle;
     return e;
 }

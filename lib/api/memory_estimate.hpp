@@ -27,11 +27,9 @@ struct MemoryEstimate {
 // when the outputs are the .node and .ele files, 97 to 99 with .neigh and
 // .edge, whose neighbours add 12 bytes a triangle and whose edge list more.
 // Vertex attributes add, per vertex (about one for every two triangles), the
-// record refinement keeps of each new vertex and the interpolated values,
-// held twice (in the mesh's arrays and the output's).
+// values held twice (beside the mesh and in the output's arrays).
 inline constexpr double bytes_per_triangle = 64;
 inline constexpr double bytes_per_triangle_with_neighbours = 100;
-inline constexpr double bytes_per_new_vertex_record = 40;
 
 MemoryEstimate estimate_memory(const Options& options, const mesh::Mesh& mesh,
                                const refine::RefineSettings& settings,

@@ -1,8 +1,8 @@
 // From the live mesh to the arrays Triangle's files hold: vertices numbered
 // input first then the added ones in id order (skipping ids claimed but never
 // used), triangles in id order with dead slots skipped, neighbours
-// renumbered to match, vertex attributes interpolated and markers set by
-// Triangle's rules.
+// renumbered to match, vertex attributes as the mesh keeps them (interpolated
+// where refinement added the vertex) and markers set by Triangle's rules.
 
 #include "api/job_stages.hpp"
 #include "mesh/traverse.hpp"
@@ -22,45 +22,11 @@ namespace {
 
 constexpr std::uint32_t none = NeighbourSet::none;
 
-// Attributes of the added vertices: Triangle interpolates linearly, on the
-// subsegment a new vertex splits or in the triangle that contained it.
-void interpolate_attributes(const mesh::Mesh& mesh, NodeSet& nodes,
-                            const std::vector<std::uint32_t>& number,
-                            std::span<const refine::NewVertex> added) {
-    const std::uint32_t na = nodes.attribute_count;
-    if (na == 0) return;
-    auto attribute = [&](mesh::VertexId v, std::uint32_t i) {
-        return nodes.attributes[std::size_t{number[index(v)]} * na + i];
-    };
-    for (const refine::NewVertex& n : added) {
-        const std::size_t row = std::size_t{number[index(n.vertex)]} * na;
-        if (n.on_segment) {
-            for (std::uint32_t i = 0; i < na; ++i)
-                nodes.attributes[row + i] =
-                    (1 - n.t) * attribute(n.from, i) + n.t * attribute(n.to, i);
-            continue;
-        }
-        // Barycentric weights of the new vertex in the triangle that held it.
-        const auto& p = mesh.point(n.vertex);
-        const auto& a = mesh.point(n.corners[0]);
-        const auto& b = mesh.point(n.corners[1]);
-        const auto& c = mesh.point(n.corners[2]);
-        const double det = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
-        const double wb = ((p.x - a.x) * (c.y - a.y) - (c.x - a.x) * (p.y - a.y)) / det;
-        const double wc = ((b.x - a.x) * (p.y - a.y) - (p.x - a.x) * (b.y - a.y)) / det;
-        for (std::uint32_t i = 0; i < na; ++i)
-            nodes.attributes[row + i] = (1 - wb - wc) * attribute(n.corners[0], i) +
-                                        wb * attribute(n.corners[1], i) +
-                                        wc * attribute(n.corners[2], i);
-    }
-}
-
 }  // namespace
 
 MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t input_count,
-                          std::span<const refine::NewVertex> added, std::uint32_t attribute_count,
-                          std::span<const double> region_attributes, bool with_neighbours,
-                          bool materialise) {
+                          std::uint32_t attribute_count, std::span<const double> region_attributes,
+                          bool with_neighbours, bool materialise) {
     MeshArrays out;
 
     // Vertex numbers: the input vertices keep theirs (duplicates included,
@@ -86,8 +52,15 @@ MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t inp
         nodes.xy.push_back(p.x);
         nodes.xy.push_back(p.y);
     }
-    nodes.attributes.resize(nodes.size() * nodes.attribute_count, 0.0);
-    interpolate_attributes(mesh, nodes, number, added);
+    // The added vertices' attributes, as refinement interpolated them.
+    const std::uint32_t na = nodes.attribute_count;
+    nodes.attributes.resize(nodes.size() * na, 0.0);
+    if (na > 0 && mesh.attributes().width() == na)
+        for (std::size_t n = input_count; n < out.mesh_ids.size(); ++n) {
+            const auto row = mesh.attributes().row(mesh::VertexId{out.mesh_ids[n]});
+            std::copy(row.begin(), row.end(),
+                      nodes.attributes.begin() + static_cast<std::ptrdiff_t>(n * na));
+        }
 
     // Triangles, compactly numbered in id order.
     std::vector<std::uint32_t> triangle_number;

@@ -3,6 +3,7 @@
 // an .ele rebuilt (-r); then -D's conforming splits.  What the library
 // reports about the input (duplicates, crossings) becomes warnings here.
 
+#include <algorithm>
 #include <map>
 
 #include <fmt/format.h>
@@ -53,6 +54,20 @@ std::vector<geometry::Point> take_points(NodeSet& nodes) {
     return points;
 }
 
+// The input vertices' attributes, copied beside the mesh (whose vertex ids
+// are the input's), where refinement and the output find them.
+void keep_input_attributes(const NodeSet& nodes, mesh::Mesh& mesh) {
+    const std::uint32_t na = nodes.attribute_count;
+    if (na == 0) return;
+    mesh::VertexAttributes& table = mesh.attributes() = mesh::VertexAttributes(na);
+    const std::size_t count = nodes.attributes.size() / na;
+    for (std::size_t v = 0; v < count; ++v) {
+        const std::span<double> row = table.write(mesh::VertexId{static_cast<std::uint32_t>(v)});
+        std::copy_n(nodes.attributes.begin() + static_cast<std::ptrdiff_t>(v * na), na,
+                    row.begin());
+    }
+}
+
 // Triangle's hull-as-segments: -c writes the hull to the .poly, and
 // refinement keeps its Steiner points inside it.
 void make_hull_segments(mesh::Mesh& mesh) {
@@ -75,6 +90,7 @@ void triangulate_points(const Options& options, Input& in, Triangulated& out,
     } catch (const GeometryError& e) {
         throw InputError(in.node_file, 0, e.what());
     }
+    keep_input_attributes(in.nodes.data, out.mesh);
     warn_duplicates(report.duplicates, in.node_file, in.nodes.base, warn);
     out.duplicates = report.duplicates.size();
     if (options.convex_hull || wants_refinement(options)) make_hull_segments(out.mesh);
@@ -125,15 +141,12 @@ void triangulate_pslg(const Options& options, Input& in, Triangulated& out,
                                                         p.x, p.y);
                                  }))});
     // Attributes of the new vertices: interpolated along their segment.
+    keep_input_attributes(in.nodes.data, out.mesh);
     for (const auto& v : report.new_vertices) {
         if (v.segment == triangulate::NewSegmentVertex::no_segment) continue;
-        refine::NewVertex n;
-        n.vertex = v.vertex;
-        n.on_segment = true;
-        n.from = mesh::VertexId{pslg.segments[2 * std::size_t{v.segment}]};
-        n.to = mesh::VertexId{pslg.segments[2 * std::size_t{v.segment} + 1]};
-        n.t = v.t;
-        out.new_vertices.push_back(n);
+        mesh::interpolate_on_segment(
+            out.mesh, v.vertex, mesh::VertexId{pslg.segments[2 * std::size_t{v.segment}]},
+            mesh::VertexId{pslg.segments[2 * std::size_t{v.segment} + 1]}, v.t);
     }
     // Refinement sees the pieces: a segment cut at a crossing is two
     // segments meeting at an input vertex, as in Triangle.
@@ -168,6 +181,7 @@ void rebuild_mesh(const Options& options, Input& in, Triangulated& out) {
     } catch (const GeometryError& e) {
         throw InputError(in.ele_file, 0, e.what());
     }
+    keep_input_attributes(in.nodes.data, out.mesh);
     // Triangle attributes ride on the region field, which every later stage
     // passes from a triangle to the ones that replace it: region r + 1 is
     // the r-th distinct attribute tuple.
@@ -228,15 +242,8 @@ Triangulated triangulate_input(const Options& options, Input& in, const WarningS
             triangulate::make_conforming(pool, triangulate::conforming_options(options), report);
         }
         out.steiner_points += report.points_added;
-        for (const auto& s : report.splits) {
-            refine::NewVertex n;
-            n.vertex = s.vertex;
-            n.on_segment = true;
-            n.from = s.from;
-            n.to = s.to;
-            n.t = s.t;
-            out.new_vertices.push_back(n);
-        }
+        for (const auto& s : report.splits)
+            mesh::interpolate_on_segment(out.mesh, s.vertex, s.from, s.to, s.t);
         if (report.encroached_left)
             warn(Warning{
                 "", 0,

@@ -17,6 +17,7 @@ Mesh::Mesh(Mesh&& other) noexcept
     : triangles_(std::move(other.triangles_)),
       points_(std::move(other.points_)),
       kinds_(std::move(other.kinds_)),
+      attributes_(std::move(other.attributes_)),
       triangle_chunks_(other.triangle_chunks_.load()),
       vertex_end_(other.vertex_end_.load()),
       subsegments_(std::move(other.subsegments_)),
@@ -31,6 +32,7 @@ Mesh& Mesh::operator=(Mesh&& other) noexcept {
         triangles_ = std::move(other.triangles_);
         points_ = std::move(other.points_);
         kinds_ = std::move(other.kinds_);
+        attributes_ = std::move(other.attributes_);
         triangle_chunks_ = other.triangle_chunks_.load();
         vertex_end_ = other.vertex_end_.load();
         subsegments_ = std::move(other.subsegments_);

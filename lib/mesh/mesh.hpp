@@ -24,6 +24,7 @@
 #include "mesh/store.hpp"
 #include "mesh/subsegments.hpp"
 #include "mesh/triangle.hpp"
+#include "mesh/vertex_attributes.hpp"
 
 namespace gpdr::mesh {
 
@@ -69,6 +70,11 @@ public:
     void set_kind(VertexId v, VertexKind k) { kinds_[index(v)] = k; }
     // One past the largest vertex id claimed so far.
     std::uint32_t vertex_end() const { return vertex_end_.load(std::memory_order_acquire); }
+
+    // Each vertex's attributes (vertex_attributes.hpp); width 0 unless the
+    // input has attributes.
+    VertexAttributes& attributes() { return attributes_; }
+    const VertexAttributes& attributes() const { return attributes_; }
 
     // ---- triangles ---------------------------------------------------------
     Triangle& triangle(TriangleId t) { return triangles_[index(t)]; }
@@ -125,6 +131,7 @@ private:
     TriangleTable triangles_;
     PointTable points_;
     KindTable kinds_;
+    VertexAttributes attributes_;
     std::atomic<std::uint32_t> triangle_chunks_{0};
     std::atomic<std::uint32_t> vertex_end_{0};
     SubsegmentTable subsegments_;

@@ -64,9 +64,6 @@ void merge(refine::RefineReport& into, refine::RefineReport& from) {
         into.stopped = from.stopped;
         into.safety_limit = from.safety_limit;
     }
-    into.new_vertices.insert(into.new_vertices.end(), from.new_vertices.begin(),
-                             from.new_vertices.end());
-    from.new_vertices = {};
 }
 
 // The master loop and the worker threads.  Each worker has a short queue of

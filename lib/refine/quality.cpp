@@ -2,9 +2,11 @@
 
 #include "refine/quality.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <vector>
 
 #include "refine/segments.hpp"
 
@@ -45,6 +47,30 @@ TriangleMeasures QualityTest::measure(const Point& a, const Point& b, const Poin
             0.5 * orientation};
 }
 
+int QualityTest::user_test(const mesh::Mesh& mesh, const mesh::Triangle& r, double area) const {
+    // Each corner as Triangle's vertex record: x, y, then the attributes.
+    const std::uint32_t width = 2 + mesh.attributes().width();
+    constexpr std::uint32_t on_stack = 2 + 6;
+    double small[3 * on_stack];
+    thread_local std::vector<double> large;
+    double* record = small;
+    if (width > on_stack) {
+        large.resize(3 * std::size_t{width});
+        record = large.data();
+    }
+    for (int k = 0; k < 3; ++k) {
+        double* corner = record + k * width;
+        const Point& p = mesh.point(r.v[k]);
+        corner[0] = p.x;
+        corner[1] = p.y;
+        if (width > 2) {
+            const auto row = mesh.attributes().row(r.v[k]);
+            std::copy(row.begin(), row.end(), corner + 2);
+        }
+    }
+    return criteria_.user_test(record, record + width, record + 2 * width, area);
+}
+
 Poorness QualityTest::assess(const mesh::Mesh& mesh, mesh::TriangleId t, const TriangleMeasures& m,
                              bool* protected_angle) const {
     if (protected_angle) *protected_angle = false;
@@ -61,11 +87,7 @@ Poorness QualityTest::assess(const mesh::Mesh& mesh, mesh::TriangleId t, const T
         }
     }
     if (criteria_.user_test != nullptr) {
-        const Point& a = mesh.point(r.v[0]);
-        const Point& b = mesh.point(r.v[1]);
-        const Point& c = mesh.point(r.v[2]);
-        double org[2] = {a.x, a.y}, dest[2] = {b.x, b.y}, apex[2] = {c.x, c.y};
-        if (criteria_.user_test(org, dest, apex, m.area) != 0) return Poorness::unsuitable;
+        if (user_test(mesh, r, m.area) != 0) return Poorness::unsuitable;
     }
     if (bad_shape(m)) {
         // Leave alone a triangle whose small angle an input angle forces.

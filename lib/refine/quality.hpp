@@ -29,11 +29,11 @@
 
 namespace gpdr::refine {
 
-// Triangle's triunsuitable() prototype: each pointer addresses x then y of
-// one corner (corners counter-clockwise: org, dest, apex); area > 0.  gpdr
-// passes copies of the coordinates only (vertex attributes stay with the
-// caller).  Non-zero: the triangle is too big / unsuitable, refine it.  A
-// function object, so that a library caller's test can carry its own data.
+// Triangle's triunsuitable() prototype: each pointer addresses x, y and then
+// the vertex attributes of one corner (corners counter-clockwise: org, dest,
+// apex), as Triangle's vertex records do; area > 0.  gpdr passes copies, so
+// a test that writes through them changes nothing.  Non-zero: the triangle is too big / unsuitable,
+// refine it.  A function object, so that a library caller's test can carry its own data.
 using UserTest = std::function<int(double* org, double* dest, double* apex, double area)>;
 
 struct QualityCriteria {
@@ -94,6 +94,9 @@ public:
     }
 
 private:
+    // Calls criteria_.user_test on triangle r's corners.
+    int user_test(const mesh::Mesh& mesh, const mesh::Triangle& r, double area) const;
+
     QualityCriteria criteria_;
     SegmentEnds segments_;
     double rho_bar_ = 0;

@@ -316,15 +316,10 @@ bool LeafRefiner::split_subsegment(Leaf& leaf, EdgeRef e) {
     ++report_.steiner_points;
     ++report_.segment_splits;
     const Point pv = mesh_.point(result.vertex);
-    if (settings_.record_new_vertices) {
-        NewVertex nv;
-        nv.vertex = result.vertex;
-        nv.on_segment = true;
-        nv.from = a;
-        nv.to = b;
-        nv.t = ((pv.x - pa.x) * (pb.x - pa.x) + (pv.y - pa.y) * (pb.y - pa.y)) / length_squared;
-        report_.new_vertices.push_back(nv);
-    }
+    if (mesh_.attributes().width() > 0)
+        mesh::interpolate_on_segment(
+            mesh_, result.vertex, a, b,
+            ((pv.x - pa.x) * (pb.x - pa.x) + (pv.y - pa.y) * (pb.y - pa.y)) / length_squared);
     if (bounds) {
         // e's triangle is on the left of a -> b; each new triangle takes the
         // bound of the old one on its side.
@@ -455,7 +450,7 @@ double LeafRefiner::survey_cavity(const Point& p, const mesh::LocateResult& wher
 void LeafRefiner::insert_steiner_point(Leaf& leaf, const Point& p,
                                        const mesh::LocateResult& where) {
     const mesh::Triangle& host = mesh_.triangle(where.triangle);
-    const std::array<VertexId, 3> host_corners{host.v[0], host.v[1], host.v[2]};
+    const VertexId host_corners[3] = {host.v[0], host.v[1], host.v[2]};
     AreaBounds* bounds = settings_.criteria.triangle_max_area;
     const double bound = bounds ? bounds->get(where.triangle) : 0.0;
 
@@ -466,12 +461,7 @@ void LeafRefiner::insert_steiner_point(Leaf& leaf, const Point& p,
                             std::to_string(mesh::index(v)) + ")");
     count_steiner_point();
     ++report_.steiner_points;
-    if (settings_.record_new_vertices) {
-        NewVertex nv;
-        nv.vertex = v;
-        nv.corners = host_corners;
-        report_.new_vertices.push_back(nv);
-    }
+    mesh::interpolate_in_triangle(mesh_, v, host_corners);
     if (bounds)
         for (TriangleId id : buffer_.created) bounds->set(id, bound);
     classify_created(leaf);

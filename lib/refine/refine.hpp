@@ -95,26 +95,11 @@ struct RefineSettings {
 #else
     bool checked = true;
 #endif
-    // Record each new vertex (RefineReport::new_vertices) for attribute
-    // interpolation.
-    bool record_new_vertices = true;
     // Input segment ends by SubsegmentInfo::segment, 2 per segment (optional;
     // speeds up the small-angle rule, see segments.hpp).
     std::span<const mesh::VertexId> segment_ends;
     // Levels refined per refine_leaf call beyond i_min (Fig. 4's g).
     unsigned granularity = 1;
-};
-
-// A vertex refinement added, with what the caller needs to interpolate its
-// attributes (Triangle: linearly, in the triangle or on the subsegment).
-struct NewVertex {
-    mesh::VertexId vertex = mesh::no_vertex;
-    bool on_segment = false;
-    // on_segment: the subsegment from -> to it split, at parameter t.
-    mesh::VertexId from = mesh::no_vertex, to = mesh::no_vertex;
-    double t = 0.5;
-    // otherwise: the corners of the triangle that contained it.
-    std::array<mesh::VertexId, 3> corners{mesh::no_vertex, mesh::no_vertex, mesh::no_vertex};
 };
 
 struct RefineReport {
@@ -138,8 +123,6 @@ struct RefineReport {
     std::uint64_t encroached_left = 0;
     // The triangles counted in left_no_split and left_precision, by id.
     std::vector<mesh::TriangleId> given_up_triangles;
-
-    std::vector<NewVertex> new_vertices;  // if RefineSettings::record_new_vertices
 };
 
 // The shared, read-only part of a run (one per refinement, all threads).

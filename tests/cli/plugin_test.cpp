@@ -216,3 +216,52 @@ TEST_CASE("a triunsuitable() linked in at build time (gpdr_graded)", "[cli][plug
         CHECK(finer.triangles > 3 * m.triangles / 2);  // Triangle: 16,542 and 7,750
     }
 }
+
+// Triangle hands triunsuitable() its vertex records: x, y, then the vertex
+// attributes.  Here the one attribute is s = x + 2y, which linear
+// interpolation keeps exact at every vertex refinement adds, whichever
+// thread adds it; the function asks for small triangles where s < 10.
+TEST_CASE("triunsuitable() reads the corners' attributes", "[cli][plugin]") {
+    if (!have_c_compiler()) {
+        WARN("no C compiler (cc) on the PATH: attributes in triunsuitable() are not tested");
+        return;
+    }
+    TempDir dir;
+    dir.write("square.poly",
+              "4 2 1 0\n1 0 0 0\n2 10 0 10\n3 10 10 30\n4 0 10 20\n"
+              "4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n");
+    dir.write("by_attribute.c",
+              "int triunsuitable(double *org, double *dest, double *apex, double area) {\n"
+              "    double s = (org[2] + dest[2] + apex[2]) / 3;\n"
+              "    return area > (s < 10 ? 0.01 : 1.0);\n"
+              "}\n");
+    build_shared_object(dir, dir / "by_attribute.c", "by_attribute.so");
+    for (const char* threads : {"1", "2"}) {
+        const auto r = run_gpdr(dir, std::string("-Q -pq20u -j") + threads +
+                                         " --unsuitable by_attribute.so square.poly");
+        INFO("-j" << threads << " stderr: " << r.err);
+        REQUIRE(r.status == 0);
+        const auto nodes = gpdr::io::read_node(dir.path() / "square.1.node", gpdr::ignore_warning);
+        const auto ele = gpdr::io::read_ele(dir.path() / "square.1.ele", nodes.base,
+                                            nodes.data.size(), gpdr::ignore_warning);
+        const auto& xy = nodes.data.xy;
+        const auto& s = nodes.data.attributes;
+        REQUIRE(nodes.data.attribute_count == 1);
+        double worst = 0;
+        for (std::size_t v = 0; v < nodes.data.size(); ++v)
+            worst = std::max(worst, std::abs(s[v] - (xy[2 * v] + 2 * xy[2 * v + 1])));
+        CHECK(worst < 1e-12);
+        double largest_low = 0, largest_high = 0;
+        for (std::size_t t = 0; t < ele.data.size(); ++t) {
+            const std::uint32_t* c = &ele.data.corners[t * ele.data.corners_per_triangle];
+            const double area =
+                0.5 * ((xy[2 * c[1]] - xy[2 * c[0]]) * (xy[2 * c[2] + 1] - xy[2 * c[0] + 1]) -
+                       (xy[2 * c[1] + 1] - xy[2 * c[0] + 1]) * (xy[2 * c[2]] - xy[2 * c[0]]));
+            const double mean = (s[c[0]] + s[c[1]] + s[c[2]]) / 3;
+            double& largest = mean < 10 ? largest_low : largest_high;
+            largest = std::max(largest, area);
+        }
+        CHECK(largest_low <= 0.01 * (1 + 1e-9));
+        CHECK(largest_high > 0.1);  // the other side stays coarse
+    }
+}

@@ -23,7 +23,6 @@ TEST_CASE("parallel refinement speed on a large square", "[.bench][parallel]") {
     s.criteria.min_angle_degrees = 20;
     s.criteria.max_area = 1e-6;
     s.checked = false;
-    s.record_new_vertices = false;
 
     struct Case {
         const char* name;

@@ -21,7 +21,6 @@ TEST_CASE("refinement speed on a large square", "[.bench][refine]") {
     settings.criteria.min_angle_degrees = 20;
     settings.criteria.max_area = 1e-6;
     settings.checked = false;
-    settings.record_new_vertices = false;
     RefineReport report;
     const auto start = std::chrono::steady_clock::now();
     refine_mesh(m, settings, report);

@@ -327,15 +327,22 @@ private:
     // Segment s through the vertices on_[first, last), in order along it.
     void follow(std::uint32_t s, std::size_t first, std::size_t last) {
         const Segment& seg = segments_[s];
-        // The stations along s: a unless a vertex is there, the vertices, b
-        // unless a vertex is there.
+        // The stations along s: a unless a vertex is there, the vertices
+        // between a and b, b unless a vertex is there.  A vertex within the
+        // tolerance of the line but past an end (a crossing of other
+        // segments just beyond it) is no part of s.
         std::vector<Station>& stations = stations_;
         stations.clear();
-        if (mesh_.point(VertexId{on_[first].vertex}) != seg.a)
-            stations.push_back({seg.a, no_position, true});
+        stations.push_back({seg.a, no_position, true});
+        const double dx = seg.b.x - seg.a.x, dy = seg.b.y - seg.a.y;
+        const double length2 = dx * dx + dy * dy;
         for (std::size_t k = first; k < last; ++k) {
             const Point& p = mesh_.point(VertexId{on_[k].vertex});
+            const double along = (p.x - seg.a.x) * dx + (p.y - seg.a.y) * dy;
+            if (p != seg.a && p != seg.b && (along < 0 || along > length2)) continue;
             const bool exact = p == seg.a || p == seg.b || geometry::orient2d(seg.a, seg.b, p) == 0;
+            if (p == seg.a && stations.size() == 1 && stations[0].vertex == no_position)
+                stations.clear();
             stations.push_back({p, compact(on_[k].vertex), exact});
         }
         if (stations.back().at != seg.b) stations.push_back({seg.b, no_position, true});

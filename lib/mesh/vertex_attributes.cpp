@@ -14,9 +14,7 @@ VertexAttributes::VertexAttributes(std::uint32_t width) : width_(width) {
 VertexAttributes::~VertexAttributes() { release(); }
 
 VertexAttributes::VertexAttributes(VertexAttributes&& other) noexcept
-    : width_(other.width_),
-      chunks_(std::move(other.chunks_)),
-      allocated_(other.allocated_.load()) {
+    : width_(other.width_), chunks_(std::move(other.chunks_)), allocated_(other.allocated_.load()) {
     other.width_ = 0;
     other.allocated_ = 0;
 }
@@ -50,8 +48,8 @@ std::span<double> VertexAttributes::write(VertexId v) {
     double* chunk = slot.load(std::memory_order_acquire);
     if (chunk == nullptr) {
         // The first thread to publish the chunk wins; the others free theirs.
-        double* fresh = static_cast<double*>(std::calloc(std::size_t{chunk_size} * width_,
-                                                         sizeof(double)));
+        double* fresh =
+            static_cast<double*>(std::calloc(std::size_t{chunk_size} * width_, sizeof(double)));
         if (fresh == nullptr) throw std::bad_alloc();
         if (slot.compare_exchange_strong(chunk, fresh, std::memory_order_acq_rel)) {
             allocated_.fetch_add(1, std::memory_order_relaxed);

@@ -12,12 +12,15 @@
 #include <gpdr/errors.hpp>
 
 #include "geometry/crossing.hpp"
+#include "geometry/on_segment.hpp"
 #include "geometry/predicates.hpp"
 
 namespace gpdr::triangulate {
 
+using geometry::on_interior;
 using geometry::orient2d;
 using geometry::Point;
+using geometry::rounding_distance;
 
 namespace {
 
@@ -157,32 +160,6 @@ struct Box {
 double squared_distance(const Point& p, const Point& q) {
     const double dx = p.x - q.x, dy = p.y - q.y;
     return dx * dx + dy * dy;
-}
-
-// Rounding distance for points near p on a segment of the given length: a
-// relative 1e-12 of the length, and a few ulps of p's coordinates.
-double rounding_distance(double length, const Point& p) {
-    return 1e-12 * length + 16 * 0x1p-53 * std::max(std::abs(p.x), std::abs(p.y));
-}
-
-// Whether p lies on the open segment a-b: exactly (exact orient2d), or
-// within rounding distance of its line with its projection inside and
-// farther than that from both ends.  The second case is an input vertex
-// meant to be on the segment whose decimal coordinates rounded it off (a
-// sliver no refinement could remove); the segment bends through it.
-bool on_interior(const Point& a, const Point& b, const Point& p) {
-    const double o = orient2d(a, b, p);
-    if (o == 0) {
-        if (a.x != b.x) return (a.x < p.x && p.x < b.x) || (b.x < p.x && p.x < a.x);
-        return (a.y < p.y && p.y < b.y) || (b.y < p.y && p.y < a.y);
-    }
-    const double length_squared = squared_distance(a, b);
-    const double length = std::sqrt(length_squared);
-    const double near = rounding_distance(length, p);
-    if (std::abs(o) > near * length) return false;  // |o| / length is the distance to the line
-    const double along = (p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y);
-    if (along <= 0 || along >= length_squared) return false;
-    return squared_distance(p, a) > near * near && squared_distance(p, b) > near * near;
 }
 
 int sign(double v) { return (v > 0) - (v < 0); }

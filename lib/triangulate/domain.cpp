@@ -9,6 +9,7 @@
 
 #include <gpdr/errors.hpp>
 
+#include "geometry/on_segment.hpp"
 #include "mesh/locate.hpp"
 #include "mesh/pool.hpp"
 
@@ -59,6 +60,43 @@ void spread(Mesh& mesh, TriangleId seed, std::vector<TriangleId>& out) {
     }
 }
 
+// -c: every edge of the convex hull that is not a subsegment becomes one
+// (marker 1, no source segment), except that the hull, like an input
+// segment, bends through a vertex within rounding of one of its edges
+// (geometry/on_segment.hpp): the sliver between the edge and that vertex is
+// infected, and its two inner edges take the hull edge's place, looked at
+// in turn.  A hull edge is an edge with no neighbour, or whose neighbour is
+// such a sliver.
+void make_hull_subsegments(Mesh& mesh, std::vector<TriangleId>& slivers) {
+    std::vector<EdgeRef> hull;
+    const std::uint32_t end = mesh.triangle_end();
+    for (std::uint32_t i = 0; i < end; ++i) {
+        const Triangle& t = mesh.triangle(TriangleId{i});
+        if (!t.live()) continue;
+        for (int k = 0; k < 3; ++k)
+            if (t.n[k].is_none()) hull.push_back(EdgeRef(TriangleId{i}, k));
+    }
+    while (!hull.empty()) {
+        const EdgeRef e = hull.back();
+        hull.pop_back();
+        Triangle& t = mesh.triangle(e.triangle());
+        const int k = e.edge();
+        if (t.marked() || t.is_subsegment(k)) continue;
+        const VertexId a = t.v[next3(k)], b = t.v[prev3(k)], c = t.v[k];
+        const EdgeRef towards_a = t.n[prev3(k)], towards_b = t.n[next3(k)];
+        if (!towards_a.is_none() && !towards_b.is_none() &&
+            geometry::on_interior(mesh.point(a), mesh.point(b), mesh.point(c))) {
+            t.flags |= mark;
+            slivers.push_back(e.triangle());
+            if (!t.is_subsegment(prev3(k))) hull.push_back(towards_a);
+            if (!t.is_subsegment(next3(k))) hull.push_back(towards_b);
+            continue;
+        }
+        t.set_subsegment(k, true);
+        mesh.subsegments().set(a, b, SubsegmentInfo{1, SubsegmentInfo::no_segment});
+    }
+}
+
 }  // namespace
 
 void carve_domain(Mesh& mesh, const Pslg& pslg, const CdtOptions& options) {
@@ -77,20 +115,8 @@ void carve_domain(Mesh& mesh, const Pslg& pslg, const CdtOptions& options) {
         region_seeds.push_back(seed_at(mesh, {r.x, r.y}, any, random_state));
 
     const std::uint32_t end = mesh.triangle_end();
-    if (options.convex_hull) {
-        for (std::uint32_t i = 0; i < end; ++i) {
-            Triangle& t = mesh.triangle(TriangleId{i});
-            if (!t.live()) continue;
-            for (int k = 0; k < 3; ++k) {
-                if (!t.n[k].is_none() || t.is_subsegment(k)) continue;
-                t.set_subsegment(k, true);
-                mesh.subsegments().set(t.v[next3(k)], t.v[prev3(k)],
-                                       SubsegmentInfo{1, SubsegmentInfo::no_segment});
-            }
-        }
-    }
-
     std::vector<TriangleId> infected;
+    if (options.convex_hull) make_hull_subsegments(mesh, infected);
     for (TriangleId s : hole_seeds)
         if (s != no_triangle) spread(mesh, s, infected);
     if (!options.convex_hull) {

@@ -16,7 +16,9 @@
 // left with no triangle stay in the store (written unless -j).
 //
 // With convex_hull every hull edge that is not a subsegment becomes one,
-// marker 1 and no source segment.
+// marker 1 and no source segment; a vertex within rounding of a hull edge
+// bends it, as it bends an input segment, and the sliver between them is
+// killed.
 //
 // Regions, after the carving: from the triangle containing each region point
 // (located before anything is killed; nothing if it was killed), the region

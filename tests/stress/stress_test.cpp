@@ -37,7 +37,7 @@ std::uint64_t inputs_per_switch_set() {
 TEST_CASE("crossing reproducers", "[stress]") {
     const fs::path data = fs::path(GPDR_SOURCE_DIR) / "tests" / "data" / "crossings";
     const gpdr::test::TempDir scratch;
-    for (const char* name : {"a.poly", "b.poly", "c.poly"}) {
+    for (const char* name : {"a.poly", "b.poly", "c.poly", "near-end.poly", "hull-bend.poly"}) {
         const auto input = gpdr::io::read_poly((data / name).string(), gpdr::ignore_warning).data;
         for (const char* switches : {"-p", "-pc", "-pq20", "-pq30"}) {
             const Outcome outcome = run_case(gpdr_exe, RunSpec{switches, 0, time_limit}, input,

@@ -10,10 +10,22 @@
    build does). */
 static const double unsuitable_area = 0.02;
 
+/* Each corner is Triangle's vertex record: x, y, then the attributes.  When
+   the user test below gives the points one attribute, x + 2y, every corner
+   must carry it (linear interpolation keeps it exact); corners that do not
+   are counted. */
+static int corners_have_attribute = 0;
+static int corners_without_it = 0;
+
+static void check_corner(const double* corner) {
+    if (corners_have_attribute && fabs(corner[2] - (corner[0] + 2 * corner[1])) > 1e-12)
+        ++corners_without_it;
+}
+
 int triunsuitable(double* org, double* dest, double* apex, double area) {
-    (void)org;
-    (void)dest;
-    (void)apex;
+    check_corner(org);
+    check_corner(dest);
+    check_corner(apex);
     return area > unsuitable_area;
 }
 
@@ -255,7 +267,15 @@ static void convex_hull_segments(void) {
 
 static void user_test(void) {
     struct triangulateio in = capi_square_points(), out = capi_empty();
+    double attributes[5];
+    for (int v = 0; v < 5; ++v) attributes[v] = in.pointlist[2 * v] + 2 * in.pointlist[2 * v + 1];
+    in.pointattributelist = attributes;
+    in.numberofpointattributes = 1;
+    corners_have_attribute = 1;
+    corners_without_it = 0;
     CHECK(triangulate("uQ", &in, &out, NULL) == 0);
+    corners_have_attribute = 0;
+    CHECK(corners_without_it == 0);
     CHECK(out.numberoftriangles >= 50);
     for (int t = 0; t < out.numberoftriangles; ++t)
         CHECK(capi_area2(&out, t, 1) / 2 <= unsuitable_area);

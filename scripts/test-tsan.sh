@@ -2,7 +2,7 @@
 # Builds gpdr's parallel tests and the gpdr program with ThreadSanitizer
 # (build-tsan) and runs them: the parallel tests, then gpdr -j4 refining a
 # sample, taking its -V statistics and writing every output file side by
-# side, then eight threads calling libtriangle's triangulate() at once.  Any race report fails the run.  GCC 12 gives false warnings in
+# side, and refining a sample with vertex attributes, then eight threads calling libtriangle's triangulate() at once.  Any race report fails the run.  GCC 12 gives false warnings in
 # Catch2's headers under sanitizers, so -Werror is off here.
 set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -26,6 +26,10 @@ cp "$root/poly-samples/flow.poly" "$scratch/"
 # -V: the quality statistics of its 26,000 triangles are taken on four
 # threads too (runs of 16384 triangles).
 run "$build/gpdr" -Vpq30a0.02cenvj4 "$scratch/flow.poly" >/dev/null
+# With a vertex attribute, which worker threads interpolate into the rows
+# beside the mesh as they insert vertices, and read back for each other's.
+cp "$root/tests/data/letter.poly" "$scratch/"
+run "$build/gpdr" -Qpq30a0.001j4 "$scratch/letter.poly"
 echo "gpdr -j4 under ThreadSanitizer: no race reported"
 run "$build/tests/capi_threads_test" >/dev/null
 echo "libtriangle from 8 threads under ThreadSanitizer: no race reported"

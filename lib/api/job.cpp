@@ -20,6 +20,7 @@
 #include "mesh/input_check.hpp"
 #include "mesh/traverse.hpp"
 #include "parallel/refine_parallel.hpp"
+#include "refine/quality.hpp"
 #include "refine/refine.hpp"
 
 namespace gpdr {
@@ -86,6 +87,7 @@ struct Meshed {
     refine::RefineReport refined;
     std::vector<std::string> parallel_lines;
     std::vector<std::string> quality;
+    refine::UserTest user_test;  // -u: the test refinement met, for -C
 };
 
 // -C: the mesh on its own (topology, orientation, constrained Delaunay),
@@ -105,6 +107,14 @@ std::vector<std::string> check(const Options& options, int base,
         against.max_area = options.area_limit ? options.max_area : 0;
         against.regional_area = options.regional_area && !options.refine;
         against.exempt = m.refined.given_up_triangles;
+        if (m.user_test)
+            against.unsuitable = [&](mesh::TriangleId t) {
+                const mesh::Triangle& r = tri.mesh.triangle(t);
+                const double area =
+                    0.5 * geometry::orient2d(tri.mesh.point(r.v[0]), tri.mesh.point(r.v[1]),
+                                             tri.mesh.point(r.v[2]));
+                return refine::call_user_test(m.user_test, tri.mesh, r, area) != 0;
+            };
     }
     against.region_attributes = options.region_attributes && options.poly && !options.refine;
     against.attribute_of_region = tri.region_attributes;
@@ -132,6 +142,7 @@ Meshed make_mesh(const Options& options, api::Input& input, const WarningSink& w
         refine::RefineSettings settings =
             api::refine_settings(options, plugins, input.poly ? &*input.poly : nullptr);
         settings.criteria.triangle_max_area = tri.area_bounds.get();
+        m.user_test = settings.criteria.user_test;
         settings.criteria.diametral_circles = options.conforming_delaunay;
         settings.segment_ends = tri.segment_ends;
         // -S counts every vertex gpdr adds, as Triangle's does: those -D

@@ -653,6 +653,9 @@ private:
                                       : fmt::format("region {}", region + options_.base),
                                   want);
             }
+            if (options_.unsuitable && !exempt(id) && options_.unsuitable(id))
+                problems_.add("the triangle {} {} {} is one triunsuitable() asks to refine", at(a),
+                              at(b), at(c));
             if (options_.min_angle <= 0 && options_.max_area <= 0 && !regional) continue;
             const double twice_area = geometry::orient2d(a, b, c);
             const double area = 0.5 * twice_area;

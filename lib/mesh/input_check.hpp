@@ -39,7 +39,8 @@
 //              the global or its region's bound, except those refinement
 //              reports it gave up (`exempt`) and those whose shortest edge
 //              joins two segments that meet at an end of both at 60 degrees
-//              or less (the small angle is the input's).  The per-triangle
+//              or less (the small angle is the input's); and, with -u, none
+//              that the user's triunsuitable() asks to refine.  The per-triangle
 //              bounds of an .area file (-ra) are not checked: they pass from
 //              a triangle to those that replace it, which no geometry of the
 //              input decides.
@@ -57,6 +58,7 @@
 // vertices by coordinates, at most `max_problems` of them and then one
 // line saying how many more.
 
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -92,6 +94,8 @@ struct InputCheckOptions {
     bool region_attributes = false;  // -A: check each triangle's attribute
     // -A: the attribute of each value of Triangle::region.
     std::span<const double> attribute_of_region;
+    // -u: whether the user's triunsuitable() asks to refine a triangle.
+    std::function<bool(TriangleId)> unsuitable;
     // Triangles refinement gave up, sorted by id: not held to the bounds.
     std::span<const TriangleId> exempt;
     std::size_t max_problems = 100;

@@ -47,7 +47,8 @@ TriangleMeasures QualityTest::measure(const Point& a, const Point& b, const Poin
             0.5 * orientation};
 }
 
-int QualityTest::user_test(const mesh::Mesh& mesh, const mesh::Triangle& r, double area) const {
+int call_user_test(const UserTest& test, const mesh::Mesh& mesh, const mesh::Triangle& r,
+                   double area) {
     // Each corner as Triangle's vertex record: x, y, then the attributes.
     const std::uint32_t width = 2 + mesh.attributes().width();
     constexpr std::uint32_t on_stack = 2 + 6;
@@ -68,7 +69,7 @@ int QualityTest::user_test(const mesh::Mesh& mesh, const mesh::Triangle& r, doub
             std::copy(row.begin(), row.end(), corner + 2);
         }
     }
-    return criteria_.user_test(record, record + width, record + 2 * width, area);
+    return test(record, record + width, record + 2 * width, area);
 }
 
 Poorness QualityTest::assess(const mesh::Mesh& mesh, mesh::TriangleId t, const TriangleMeasures& m,
@@ -87,7 +88,7 @@ Poorness QualityTest::assess(const mesh::Mesh& mesh, mesh::TriangleId t, const T
         }
     }
     if (criteria_.user_test != nullptr) {
-        if (user_test(mesh, r, m.area) != 0) return Poorness::unsuitable;
+        if (call_user_test(criteria_.user_test, mesh, r, m.area) != 0) return Poorness::unsuitable;
     }
     if (bad_shape(m)) {
         // Leave alone a triangle whose small angle an input angle forces.

@@ -36,6 +36,11 @@ namespace gpdr::refine {
 // refine it.  A function object, so that a library caller's test can carry its own data.
 using UserTest = std::function<int(double* org, double* dest, double* apex, double area)>;
 
+// Calls `test` on triangle r of the mesh (area > 0) with each corner as
+// Triangle's vertex record: x, y, then the vertex's attributes.
+int call_user_test(const UserTest& test, const mesh::Mesh& mesh, const mesh::Triangle& r,
+                   double area);
+
 struct QualityCriteria {
     double min_angle_degrees = 0;  // -q; 0: no angle test
     double max_area = -1;          // -a<A>; <= 0: no bound
@@ -94,9 +99,6 @@ public:
     }
 
 private:
-    // Calls criteria_.user_test on triangle r's corners.
-    int user_test(const mesh::Mesh& mesh, const mesh::Triangle& r, double area) const;
-
     QualityCriteria criteria_;
     SegmentEnds segments_;
     double rho_bar_ = 0;

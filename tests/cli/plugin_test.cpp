@@ -237,7 +237,7 @@ TEST_CASE("triunsuitable() reads the corners' attributes", "[cli][plugin]") {
               "}\n");
     build_shared_object(dir, dir / "by_attribute.c", "by_attribute.so");
     for (const char* threads : {"1", "2"}) {
-        const auto r = run_gpdr(dir, std::string("-Q -pq20u -j") + threads +
+        const auto r = run_gpdr(dir, std::string("-Q -pq20uC -j") + threads +
                                          " --unsuitable by_attribute.so square.poly");
         INFO("-j" << threads << " stderr: " << r.err);
         REQUIRE(r.status == 0);

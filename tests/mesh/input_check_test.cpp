@@ -139,6 +139,21 @@ TEST_CASE("the input check finds what is wrong", "[mesh][input_check]") {
         o.regional_area = true;
         CHECK(mentions(check_against_input(mesh, g, o), "above region 1's bound 0.2"));
     }
+    SECTION("a triangle the user's triunsuitable() rejects, unless given up") {
+        // The test rejects the triangle whose corners include (1, 1).
+        o.unsuitable = [&](TriangleId t) {
+            const Triangle& r = mesh.triangle(t);
+            return std::any_of(std::begin(r.v), std::end(r.v),
+                               [&](VertexId v) { return mesh.point(v) == Point{1, 1}; });
+        };
+        const auto p = check_against_input(mesh, g, o);
+        CHECK(mentions(p, "(1, 1) (0.5, 0.4) is one triunsuitable() asks to refine"));
+        CHECK(p.size() == 2);  // the two triangles at (1, 1)
+        std::vector<TriangleId> exempt;
+        for_each_triangle(mesh, [&](TriangleId t, const Triangle&) { exempt.push_back(t); });
+        o.exempt = exempt;
+        CHECK(all(check_against_input(mesh, g, o)).empty());
+    }
     SECTION("numbers from 0 with base 0") {
         g.points.push_back({0.25, 0.75});
         o.base = 0;

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Delaunay triangulation of uniform random points :
+# Delaunay triangulation of uniform random points:
 #
 #   scripts/bench-delaunay.sh [N ...]          default: 1000000 10000000
-#   TRIANGLE=/tmp/triangle/triangle scripts/bench-delaunay.sh
+#   TRIANGLE=/path/to/triangle scripts/bench-delaunay.sh
 #
 # Prints a Markdown table: per program, stage seconds, wall seconds and peak
 # memory.  Triangle's "read+tri" column holds only its Delaunay time (it does

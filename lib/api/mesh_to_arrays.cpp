@@ -4,6 +4,8 @@
 // renumbered to match, vertex attributes as the mesh keeps them (interpolated
 // where refinement added the vertex) and markers set by Triangle's rules.
 
+#include <algorithm>
+
 #include "api/job_stages.hpp"
 #include "mesh/traverse.hpp"
 
@@ -22,15 +24,12 @@ namespace {
 
 constexpr std::uint32_t none = NeighbourSet::none;
 
-}  // namespace
-
-MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t input_count,
-                          std::uint32_t attribute_count, std::span<const double> region_attributes,
-                          bool with_neighbours, bool materialise) {
-    MeshArrays out;
-
-    // Vertex numbers: the input vertices keep theirs (duplicates included,
-    // as Triangle writes them); added vertices follow.
+// Vertex numbers: the input vertices keep theirs (duplicates included, as
+// Triangle writes them); added vertices follow, in id order, skipping ids
+// claimed but never used.  Fills the coordinates in `nodes` and `mesh_ids`;
+// returns each mesh vertex's number (none for the skipped).
+std::vector<std::uint32_t> number_vertices(const mesh::Mesh& mesh, std::size_t input_count,
+                                           NodeSet& nodes, std::vector<std::uint32_t>& mesh_ids) {
     const std::uint32_t vertex_end = mesh.vertex_end();
     nodes.xy.resize(2 * input_count);
     for (std::uint32_t v = 0; v < input_count; ++v) {
@@ -39,81 +38,105 @@ MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t inp
         nodes.xy[2 * std::size_t{v} + 1] = p.y;
     }
     std::vector<std::uint32_t> number(std::max<std::size_t>(vertex_end, input_count), none);
-    out.mesh_ids.reserve(number.size());
+    mesh_ids.reserve(number.size());
     for (std::uint32_t v = 0; v < input_count; ++v) {
         number[v] = v;
-        out.mesh_ids.push_back(v);
+        mesh_ids.push_back(v);
     }
     for (std::uint32_t v = static_cast<std::uint32_t>(input_count); v < vertex_end; ++v) {
         if (mesh.kind(mesh::VertexId{v}) == mesh::VertexKind::unused) continue;
-        number[v] = static_cast<std::uint32_t>(out.mesh_ids.size());
-        out.mesh_ids.push_back(v);
+        number[v] = static_cast<std::uint32_t>(mesh_ids.size());
+        mesh_ids.push_back(v);
         const auto& p = mesh.point(mesh::VertexId{v});
         nodes.xy.push_back(p.x);
         nodes.xy.push_back(p.y);
     }
-    // The added vertices' attributes, as refinement interpolated them.
+    return number;
+}
+
+// The added vertices' attributes, as the mesh keeps them (interpolated where
+// each was inserted); the input vertices' stay as read.
+void copy_added_attributes(const mesh::Mesh& mesh, std::size_t input_count,
+                           const std::vector<std::uint32_t>& mesh_ids, NodeSet& nodes) {
     const std::uint32_t na = nodes.attribute_count;
     nodes.attributes.resize(nodes.size() * na, 0.0);
-    if (na > 0 && mesh.attributes().width() == na)
-        for (std::size_t n = input_count; n < out.mesh_ids.size(); ++n) {
-            const auto row = mesh.attributes().row(mesh::VertexId{out.mesh_ids[n]});
-            std::copy(row.begin(), row.end(),
-                      nodes.attributes.begin() + static_cast<std::ptrdiff_t>(n * na));
-        }
+    if (na == 0 || mesh.attributes().width() != na) return;
+    for (std::size_t n = input_count; n < mesh_ids.size(); ++n) {
+        const auto row = mesh.attributes().row(mesh::VertexId{mesh_ids[n]});
+        std::copy(row.begin(), row.end(),
+                  nodes.attributes.begin() + static_cast<std::ptrdiff_t>(n * na));
+    }
+}
 
-    // Triangles, compactly numbered in id order.
-    std::vector<std::uint32_t> triangle_number;
+// The number of live triangles; with neighbours, also each slot's number
+// (compact, in id order) in `triangle_number`.
+std::uint32_t number_triangles(const mesh::Mesh& mesh, bool with_neighbours,
+                               std::vector<std::uint32_t>& triangle_number) {
     std::uint32_t count = 0;
     if (with_neighbours) {
         triangle_number.assign(mesh.triangle_end(), none);
         mesh::for_each_triangle(mesh, [&](mesh::TriangleId id, const mesh::Triangle&) {
             triangle_number[index(id)] = count++;
         });
-        out.neighbours.neighbours.reserve(3 * std::size_t{count});
     } else {
         mesh::for_each_triangle(mesh, [&](mesh::TriangleId, const mesh::Triangle&) { ++count; });
     }
-    out.triangle_count = count;
-    out.triangles.corners_per_triangle = 3;
-    out.triangles.attribute_count = attribute_count;
-    if (!materialise) {
-        // Each pass over the stream walks the slots again; `number` is
-        // shared by the passes (the -V statistics and the .ele file).
-        auto shared_number = std::make_shared<const std::vector<std::uint32_t>>(number);
-        out.stream = [&mesh, shared_number, count, attribute_count, region_attributes] {
-            return io::EleSource{
-                count, 3, attribute_count,
-                [&mesh, shared_number, attribute_count, region_attributes, slot = std::uint32_t{0}](
-                    std::uint32_t* corners, double* attributes) mutable {
-                    while (!mesh.triangle(mesh::TriangleId{slot}).live()) ++slot;
-                    const mesh::Triangle& t = mesh.triangle(mesh::TriangleId{slot++});
-                    for (int k = 0; k < 3; ++k) corners[k] = (*shared_number)[index(t.v[k])];
-                    const std::size_t row = std::size_t{t.region} * attribute_count;
-                    for (std::uint32_t i = 0; i < attribute_count; ++i)
-                        attributes[i] =
-                            row + i < region_attributes.size() ? region_attributes[row + i] : 0.0;
-                }};
-        };
-    } else {
-        out.triangles.corners.reserve(3 * std::size_t{count});
-        out.triangles.attributes.reserve(std::size_t{attribute_count} * count);
-        mesh::for_each_triangle(mesh, [&](mesh::TriangleId, const mesh::Triangle& t) {
-            for (int k = 0; k < 3; ++k) {
-                out.triangles.corners.push_back(number[index(t.v[k])]);
-                if (with_neighbours)
-                    out.neighbours.neighbours.push_back(
-                        t.n[k].is_none() ? none : triangle_number[index(t.n[k].triangle())]);
-            }
-            const std::size_t row = std::size_t{t.region} * attribute_count;
-            for (std::uint32_t i = 0; i < attribute_count; ++i)
-                out.triangles.attributes.push_back(
-                    row + i < region_attributes.size() ? region_attributes[row + i] : 0.0);
-        });
-    }
+    return count;
+}
 
-    // Markers: keep non-zero input markers; otherwise a subsegment's marker,
-    // then 1 for any boundary vertex.
+// A triangle's attributes are its region's (0 past the table).
+double region_attribute(std::span<const double> region_attributes, std::size_t at) {
+    return at < region_attributes.size() ? region_attributes[at] : 0.0;
+}
+
+// The triangles as a stream that walks the mesh's slots on each pass;
+// `number` is shared by the passes (the -V statistics and the .ele file).
+std::function<io::EleSource()> triangle_stream(const mesh::Mesh& mesh,
+                                               std::vector<std::uint32_t> number,
+                                               std::uint32_t count, std::uint32_t attribute_count,
+                                               std::span<const double> region_attributes) {
+    auto shared_number = std::make_shared<const std::vector<std::uint32_t>>(std::move(number));
+    return [&mesh, shared_number, count, attribute_count, region_attributes] {
+        return io::EleSource{
+            count, 3, attribute_count,
+            [&mesh, shared_number, attribute_count, region_attributes, slot = std::uint32_t{0}](
+                std::uint32_t* corners, double* attributes) mutable {
+                while (!mesh.triangle(mesh::TriangleId{slot}).live()) ++slot;
+                const mesh::Triangle& t = mesh.triangle(mesh::TriangleId{slot++});
+                for (int k = 0; k < 3; ++k) corners[k] = (*shared_number)[index(t.v[k])];
+                const std::size_t row = std::size_t{t.region} * attribute_count;
+                for (std::uint32_t i = 0; i < attribute_count; ++i)
+                    attributes[i] = region_attribute(region_attributes, row + i);
+            }};
+    };
+}
+
+// The triangles copied into out.triangles (and, with neighbours, their
+// neighbours renumbered by `triangle_number` into out.neighbours).
+void copy_triangles(const mesh::Mesh& mesh, const std::vector<std::uint32_t>& number,
+                    const std::vector<std::uint32_t>& triangle_number, bool with_neighbours,
+                    std::span<const double> region_attributes, MeshArrays& out) {
+    const std::uint32_t count = static_cast<std::uint32_t>(out.triangle_count);
+    const std::uint32_t attribute_count = out.triangles.attribute_count;
+    out.triangles.corners.reserve(3 * std::size_t{count});
+    out.triangles.attributes.reserve(std::size_t{attribute_count} * count);
+    mesh::for_each_triangle(mesh, [&](mesh::TriangleId, const mesh::Triangle& t) {
+        for (int k = 0; k < 3; ++k) {
+            out.triangles.corners.push_back(number[index(t.v[k])]);
+            if (with_neighbours)
+                out.neighbours.neighbours.push_back(
+                    t.n[k].is_none() ? none : triangle_number[index(t.n[k].triangle())]);
+        }
+        const std::size_t row = std::size_t{t.region} * attribute_count;
+        for (std::uint32_t i = 0; i < attribute_count; ++i)
+            out.triangles.attributes.push_back(region_attribute(region_attributes, row + i));
+    });
+}
+
+// Markers: keep non-zero input markers; otherwise a subsegment's marker,
+// then 1 for any boundary vertex.
+void set_vertex_markers(const mesh::Mesh& mesh, const std::vector<std::uint32_t>& number,
+                        NodeSet& nodes) {
     nodes.markers.resize(nodes.size(), 0);
     std::vector<bool> fixed(nodes.size());
     for (std::size_t v = 0; v < nodes.size(); ++v) fixed[v] = nodes.markers[v] != 0;
@@ -129,6 +152,30 @@ MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t inp
         for (const auto v : {number[index(e.from)], number[index(e.to)]})
             if (!fixed[v]) nodes.markers[v] = 1;
     });
+}
+
+}  // namespace
+
+MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t input_count,
+                          std::uint32_t attribute_count, std::span<const double> region_attributes,
+                          bool with_neighbours, bool materialise) {
+    MeshArrays out;
+    const std::vector<std::uint32_t> number =
+        number_vertices(mesh, input_count, nodes, out.mesh_ids);
+    copy_added_attributes(mesh, input_count, out.mesh_ids, nodes);
+
+    std::vector<std::uint32_t> triangle_number;
+    const std::uint32_t count = number_triangles(mesh, with_neighbours, triangle_number);
+    if (with_neighbours) out.neighbours.neighbours.reserve(3 * std::size_t{count});
+    out.triangle_count = count;
+    out.triangles.corners_per_triangle = 3;
+    out.triangles.attribute_count = attribute_count;
+    if (materialise)
+        copy_triangles(mesh, number, triangle_number, with_neighbours, region_attributes, out);
+    else
+        out.stream = triangle_stream(mesh, number, count, attribute_count, region_attributes);
+
+    set_vertex_markers(mesh, number, nodes);
     out.nodes = std::move(nodes);
     return out;
 }

@@ -7,6 +7,7 @@
 #include "mesh/split_subsegment.hpp"
 
 #include <algorithm>
+#include <string>
 
 #include <gpdr/errors.hpp>
 
@@ -119,62 +120,71 @@ bool can_split_at(const Mesh& mesh, EdgeRef s, const Point& p) {
     return placeable(mesh, s, mesh.neighbour(s), p);
 }
 
-InsertResult split_subsegment(Pool& pool, EdgeRef s, const Point& asked, VertexKind kind,
-                              InsertBuffer& buf) {
-    Mesh& mesh = pool.mesh();
-    const VertexId x = mesh.origin(s), y = mesh.destination(s);
-    const EdgeRef across = mesh.neighbour(s);
+namespace {
 
-    // Where the vertex goes: the asked point, or pulled toward the middle.
+std::string edge_name(VertexId x, VertexId y) {
+    return std::to_string(index(x)) + "-" + std::to_string(index(y));
+}
+
+// Where the vertex goes on x-y (the edge s): the asked point, or pulled
+// toward the middle until the triangles on both sides see it.
+Point placement(const Mesh& mesh, EdgeRef s, EdgeRef across, VertexId x, VertexId y,
+                const Point& asked) {
     Point p = asked;
     const Point middle = midpoint(mesh.point(x), mesh.point(y));
     for (int i = 0; !placeable(mesh, s, across, p); ++i) {
         if (i == 64) {
-            if (placeable(mesh, s, across, middle)) {
-                p = middle;
-                break;
-            }
-            throw Error("mesh: cannot place a vertex inside subsegment " +
-                        std::to_string(index(x)) + "-" + std::to_string(index(y)) +
+            if (placeable(mesh, s, across, middle)) return middle;
+            throw Error("mesh: cannot place a vertex inside subsegment " + edge_name(x, y) +
                         " (degenerate triangles around it)");
         }
         p = midpoint(p, middle);
     }
+    return p;
+}
 
-    // The split edge is crossed by the cavity: unflag it for the search.
-    Triangle& t1 = mesh.triangle(s.triangle());
-    const std::uint16_t region1 = t1.region;
-    const std::uint16_t region2 =
-        across.is_none() ? region1 : mesh.triangle(across.triangle()).region;
-    t1.set_subsegment(s.edge(), false);
-    if (!across.is_none()) mesh.triangle(across.triangle()).set_subsegment(across.edge(), false);
-    auto restore = [&] {
-        clear_marks(mesh, buf.killed);
-        buf.killed.clear();
-        buf.boundary.clear();
-        buf.created.clear();
-        mesh.triangle(s.triangle()).set_subsegment(s.edge(), true);
-        if (!across.is_none()) mesh.triangle(across.triangle()).set_subsegment(across.edge(), true);
-    };
+// Sets or clears the subsegment flag of the split edge, on both sides.
+void flag_split_edge(Mesh& mesh, EdgeRef s, EdgeRef across, bool subsegment) {
+    mesh.triangle(s.triangle()).set_subsegment(s.edge(), subsegment);
+    if (!across.is_none())
+        mesh.triangle(across.triangle()).set_subsegment(across.edge(), subsegment);
+}
 
+// Leaves the mesh as it was before a split that cannot be made.
+void abandon_split(Mesh& mesh, EdgeRef s, EdgeRef across, InsertBuffer& buf) {
+    clear_marks(mesh, buf.killed);
+    buf.killed.clear();
+    buf.boundary.clear();
+    buf.created.clear();
+    flag_split_edge(mesh, s, across, true);
+}
+
+// The cavity of p around the split edge x-y (unflagged), in buf.killed and,
+// in order, buf.boundary: triangles that cannot see p are banned from it
+// and the search is tried again.
+void find_split_cavity(Mesh& mesh, EdgeRef s, EdgeRef across, VertexId x, VertexId y,
+                       const Point& p, InsertBuffer& buf) {
     // `created` serves as the list of banned triangles until the fan.
     std::vector<TriangleId>& banned = buf.created;
     banned.clear();
     for (;;) {
         const Attempt a = grow_cavity(mesh, s, across, p, buf, banned);
-        if (a == Attempt::done) break;
+        if (a == Attempt::done) return;
         if (a == Attempt::broken || banned.size() > 64) {
-            restore();
+            abandon_split(mesh, s, across, buf);
             throw InternalError(
                 "mesh: the cavity of a subsegment split is not a disk (the mesh is broken near " +
-                std::to_string(index(x)) + "-" + std::to_string(index(y)) + ")");
+                edge_name(x, y) + ")");
         }
         clear_marks(mesh, buf.killed);
     }
+}
 
-    // The fan starts at the boundary edge leaving y: edges from y round to x
-    // are on t1's side, from x round to y on the other side.
-    auto& boundary = buf.boundary;
+// The fan starts at the boundary edge leaving y: edges from y round to x
+// are on t1's side, from x round to y on the other side.  Its index, or the
+// boundary's size when the cavity would swallow x or y.
+std::size_t fan_start(const std::vector<InsertBuffer::BoundaryEdge>& boundary, VertexId x,
+                      VertexId y) {
     const std::size_t m = boundary.size();
     std::size_t first = m;
     bool sees_x = false;
@@ -182,18 +192,19 @@ InsertResult split_subsegment(Pool& pool, EdgeRef s, const Point& asked, VertexK
         if (boundary[i].from == y) first = i;
         if (boundary[i].from == x || boundary[i].to == x) sees_x = true;
     }
-    if (first == m || !sees_x) {
-        restore();
-        throw InternalError("mesh: a subsegment split would remove an end of the subsegment");
-    }
-    const bool open = across.is_none();  // the hull edge x -> y is on the boundary and stays out
+    return sees_x ? first : m;
+}
+
+// Fans the cavity boundary from the new vertex v, from boundary edge
+// `first` on, into buf.created (v at corner 2): x-v and v-y become
+// subsegments, triangles on t1's side take region1, those past x region2.
+// `open`: the hull edge x -> y is on the boundary and stays out.
+void fan_cavity(Pool& pool, InsertBuffer& buf, std::size_t first, bool open, VertexId x, VertexId y,
+                VertexId v, std::uint16_t region1, std::uint16_t region2) {
+    Mesh& mesh = pool.mesh();
+    const auto& boundary = buf.boundary;
+    const std::size_t m = boundary.size();
     const std::size_t count = open ? m - 1 : m;
-
-    SubsegmentInfo info;
-    if (const SubsegmentInfo* found = mesh.subsegments().find(x, y)) info = *found;
-    const VertexId v = pool.new_vertex(p, kind);
-
-    save_tagged_and_destroy(pool, buf);
     buf.created.clear();
     bool other_side = false;
     TriangleId previous = no_triangle;
@@ -212,7 +223,34 @@ InsertResult split_subsegment(Pool& pool, EdgeRef s, const Point& asked, VertexK
         previous = id;
     }
     if (!open) mesh.link(EdgeRef(previous, 0), EdgeRef(buf.created.front(), 1));
+}
 
+}  // namespace
+
+InsertResult split_subsegment(Pool& pool, EdgeRef s, const Point& asked, VertexKind kind,
+                              InsertBuffer& buf) {
+    Mesh& mesh = pool.mesh();
+    const VertexId x = mesh.origin(s), y = mesh.destination(s);
+    const EdgeRef across = mesh.neighbour(s);
+    const Point p = placement(mesh, s, across, x, y, asked);
+
+    // The split edge is crossed by the cavity: unflag it for the search.
+    const std::uint16_t region1 = mesh.triangle(s.triangle()).region;
+    const std::uint16_t region2 =
+        across.is_none() ? region1 : mesh.triangle(across.triangle()).region;
+    flag_split_edge(mesh, s, across, false);
+    find_split_cavity(mesh, s, across, x, y, p, buf);
+    const std::size_t first = fan_start(buf.boundary, x, y);
+    if (first == buf.boundary.size()) {
+        abandon_split(mesh, s, across, buf);
+        throw InternalError("mesh: a subsegment split would remove an end of the subsegment");
+    }
+
+    SubsegmentInfo info;
+    if (const SubsegmentInfo* found = mesh.subsegments().find(x, y)) info = *found;
+    const VertexId v = pool.new_vertex(p, kind);
+    save_tagged_and_destroy(pool, buf);
+    fan_cavity(pool, buf, first, across.is_none(), x, y, v, region1, region2);
     if (orient2d(mesh.point(x), mesh.point(y), p) != 0) lawson_flips(mesh, buf);
 
     mesh.subsegments().erase(x, y);

@@ -198,24 +198,35 @@ void Scheduler::complete(int entry, bool split, const std::vector<NodeId>& balan
 
 // ---- checked mode ---------------------------------------------------------------
 
-void verify_quadtree(const mesh::Mesh& mesh, Quadtree& tree, std::vector<std::string>& problems) {
-    const std::size_t before = problems.size();
-    auto problem = [&](std::string s) {
-        if (problems.size() - before < 20) problems.push_back(std::move(s));
-    };
-    std::unordered_map<NodeId, std::int32_t> expected;
-    bool outgrew = false;
-    std::vector<NodeId> stack;
-    std::vector<NodeId> leaves;
-    tree.leaves(leaves);
-    // The live entries of the deferred lists: slot -> the square it is
-    // deferred in (the leaf's, or its child's for the lists of the children).
-    struct DeferredIn {
-        NodeId leaf;
-        int level;
-        Square square;
-    };
-    std::unordered_map<std::uint32_t, DeferredIn> deferred_in;
+namespace {
+
+// The problems of one verification, at most 20 (more say nothing new).
+class QuadtreeProblems {
+public:
+    explicit QuadtreeProblems(std::vector<std::string>& problems)
+        : problems_(problems), before_(problems.size()) {}
+    void add(std::string s) {
+        if (problems_.size() - before_ < 20) problems_.push_back(std::move(s));
+    }
+
+private:
+    std::vector<std::string>& problems_;
+    std::size_t before_;
+};
+
+// Where a live deferred entry is deferred: the leaf's square, or its
+// child's for the lists of the children.
+struct DeferredIn {
+    NodeId leaf;
+    int level;
+    Square square;
+};
+using DeferredMap = std::unordered_map<std::uint32_t, DeferredIn>;
+
+// The live entries of every leaf's deferred lists, by triangle slot.
+DeferredMap deferred_entries(const mesh::Mesh& mesh, const Quadtree& tree,
+                             const std::vector<NodeId>& leaves, QuadtreeProblems& problems) {
+    DeferredMap deferred_in;
     for (NodeId l : leaves) {
         if (tree.node(l).state == nullptr) continue;
         const Node& n = tree.node(l);
@@ -223,7 +234,7 @@ void verify_quadtree(const mesh::Mesh& mesh, Quadtree& tree, std::vector<std::st
             list.for_each([&](const DeferredTriangle& e) {
                 if (mesh.triangle(e.t).load_generation() != e.generation) return;
                 if (!deferred_in.emplace(mesh::index(e.t), in).second)
-                    problem(fmt::format("triangle {} is deferred twice", mesh::index(e.t)));
+                    problems.add(fmt::format("triangle {} is deferred twice", mesh::index(e.t)));
             });
         };
         list_in(n.state->deferred, {l, n.level, tree.square(l)});
@@ -232,82 +243,127 @@ void verify_quadtree(const mesh::Mesh& mesh, Quadtree& tree, std::vector<std::st
                     {l, n.level + 1,
                      tree.cell_square(n.level + 1, 2 * n.ix + (q & 1), 2 * n.iy + (q >> 1))});
     }
-    mesh::for_each_triangle(mesh, [&](mesh::TriangleId id, const mesh::Triangle& t) {
-        const geometry::Circle c =
-            geometry::circumcircle(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]));
-        const CellRecord record = cell_record(tree, c.centre, c.radius_squared, outgrew);
-        const std::uint32_t i = mesh::index(id);
-        const bool counted = t.user_tag == counted_tag;
-        const auto listed = deferred_in.find(i);
-        if (listed != deferred_in.end()) {
-            // Deferred (Worker::flush_pending): not counted, listed in a leaf
-            // whose square (or its child's, for a child's list) holds it
-            // with room to spare, two or more levels above it.
-            const DeferredIn& in = listed->second;
-            const int k = tree.level_of(c.radius_squared);
-            if (counted || record == 0 || k < in.level + 2 ||
-                !tree.disk_inside(tree.room(in.square), c.centre, c.radius_squared))
-                problem(fmt::format(
-                    "triangle {} (level {}, tag {}) is deferred in leaf {} for level {}", i, k,
-                    int(t.user_tag), in.leaf, in.level));
-        } else if (!counted) {
-            if (record != 0) problem(fmt::format("triangle {} is neither counted nor deferred", i));
-        } else if (record == 0) {
-            problem(fmt::format("triangle {} is counted although too small to be", i));
+    return deferred_in;
+}
+
+// Triangle i (circumcircle c, cell record `record`) is either counted, or
+// deferred, or too small to be counted, and deferred only where it may be.
+void check_counted_or_deferred(const Quadtree& tree, std::uint32_t i, const mesh::Triangle& t,
+                               const geometry::Circle& c, CellRecord record,
+                               const DeferredMap& deferred_in, QuadtreeProblems& problems) {
+    const bool counted = t.user_tag == counted_tag;
+    const auto listed = deferred_in.find(i);
+    if (listed != deferred_in.end()) {
+        // Deferred (Worker::flush_pending): not counted, listed in a leaf
+        // whose square (or its child's, for a child's list) holds it with
+        // room to spare, two or more levels above it.
+        const DeferredIn& in = listed->second;
+        const int k = tree.level_of(c.radius_squared);
+        if (counted || record == 0 || k < in.level + 2 ||
+            !tree.disk_inside(tree.room(in.square), c.centre, c.radius_squared))
+            problems.add(
+                fmt::format("triangle {} (level {}, tag {}) is deferred in leaf {} for level {}", i,
+                            k, int(t.user_tag), in.leaf, in.level));
+    } else if (!counted) {
+        if (record != 0)
+            problems.add(fmt::format("triangle {} is neither counted nor deferred", i));
+    } else if (record == 0) {
+        problems.add(fmt::format("triangle {} is counted although too small to be", i));
+    }
+}
+
+// A counted triangle adds one to the counter of each cell its record names.
+void expect_counts(Quadtree& tree, std::uint32_t i, CellRecord record,
+                   std::unordered_map<NodeId, std::int32_t>& expected, QuadtreeProblems& problems) {
+    const int level = int((record >> 56) & 63u);
+    const unsigned mask = unsigned((record >> 52) & 15u);
+    const auto x0 = std::uint32_t((record >> 26) & ((1u << 26) - 1)),
+               y0 = std::uint32_t(record & ((1u << 26) - 1));
+    for (unsigned b = 0; b < 4; ++b) {
+        if (!(mask & (1u << b))) continue;
+        NodeId leaf;
+        const NodeId n =
+            tree.cell(Quadtree::root(), level, x0 + (b & 1u), y0 + (b >> 1), nullptr, leaf);
+        if (n == no_node)
+            problems.add(fmt::format("triangle {}: its counter cell was never made", i));
+        else
+            ++expected[n];
+    }
+}
+
+// Relation (9), with effective sides, for every leaf the circumdisk of
+// triangle i meets.  `stack` is scratch.
+void check_relation_9(const Quadtree& tree, std::uint32_t i, const geometry::Circle& c,
+                      std::vector<NodeId>& stack, QuadtreeProblems& problems) {
+    const double r = std::sqrt(c.radius_squared);
+    stack.assign(1, Quadtree::root());
+    while (!stack.empty()) {
+        const NodeId n = stack.back();
+        stack.pop_back();
+        if (!disk_meets(tree.square(n), c.centre, r)) continue;
+        if (tree.node(n).get_kind() == NodeKind::internal) {
+            for (int q = 0; q < 4; ++q) stack.push_back(tree.node(n).child(q));
+            continue;
         }
-        if (counted && record != 0) {
-            const int level = int((record >> 56) & 63u);
-            const unsigned mask = unsigned((record >> 52) & 15u);
-            const auto x0 = std::uint32_t((record >> 26) & ((1u << 26) - 1)),
-                       y0 = std::uint32_t(record & ((1u << 26) - 1));
-            for (unsigned b = 0; b < 4; ++b) {
-                if (!(mask & (1u << b))) continue;
-                NodeId leaf;
-                const NodeId n =
-                    tree.cell(Quadtree::root(), level, x0 + (b & 1u), y0 + (b >> 1), nullptr, leaf);
-                if (n == no_node)
-                    problem(fmt::format("triangle {}: its counter cell was never made", i));
-                else
-                    ++expected[n];
-            }
-        }
-        // Relation (9), with effective sides, for every leaf the disk meets.
-        const double r = std::sqrt(c.radius_squared);
-        stack.assign(1, Quadtree::root());
-        while (!stack.empty()) {
-            const NodeId n = stack.back();
-            stack.pop_back();
-            if (!disk_meets(tree.square(n), c.centre, r)) continue;
-            if (tree.node(n).get_kind() == NodeKind::internal) {
-                for (int q = 0; q < 4; ++q) stack.push_back(tree.node(n).child(q));
-                continue;
-            }
-            if (!(r < tree.effective_side(n) / 4))
-                problem(fmt::format(
-                    "relation (9) fails: triangle {} (r = {}) meets leaf {} of effective side {}",
-                    i, r, n, tree.effective_side(n)));
-        }
-    });
+        if (!(r < tree.effective_side(n) / 4))
+            problems.add(fmt::format(
+                "relation (9) fails: triangle {} (r = {}) meets leaf {} of effective side {}", i, r,
+                n, tree.effective_side(n)));
+    }
+}
+
+// Every node's counter holds what the counted triangles expect of it.
+void check_counters(const Quadtree& tree, const std::unordered_map<NodeId, std::int32_t>& expected,
+                    QuadtreeProblems& problems) {
     for (NodeId n = 0; n < tree.node_end(); ++n) {
         const auto it = expected.find(n);
         const std::int32_t want = it == expected.end() ? 0 : it->second;
         const std::int32_t have = tree.node(n).count.load(std::memory_order_relaxed);
         if (want != have)
-            problem(fmt::format("quadtree node {}: count {}, expected {}", n, have, want));
+            problems.add(fmt::format("quadtree node {}: count {}, expected {}", n, have, want));
     }
+}
+
+// The leaves have work lists, none is held, and together they tile the root.
+void check_leaves(const Quadtree& tree, const std::vector<NodeId>& leaves,
+                  QuadtreeProblems& problems) {
     double area = 0;
     for (NodeId l : leaves) {
         const Square s = tree.square(l);
         area += s.side * s.side;
         if (tree.node(l).get_kind() != NodeKind::leaf || tree.node(l).state == nullptr)
-            problem(
+            problems.add(
                 fmt::format("quadtree node {} is neither internal nor a leaf with work lists", l));
         if (tree.node(l).owner.load(std::memory_order_relaxed) != 0)
-            problem(fmt::format("leaf {} is still held while no worker is busy", l));
+            problems.add(fmt::format("leaf {} is still held while no worker is busy", l));
     }
     const Square root = tree.square(Quadtree::root());
     if (std::abs(area - root.side * root.side) > 1e-9 * root.side * root.side)
-        problem("the leaves do not tile the root square");
+        problems.add("the leaves do not tile the root square");
+}
+
+}  // namespace
+
+void verify_quadtree(const mesh::Mesh& mesh, Quadtree& tree, std::vector<std::string>& problems) {
+    QuadtreeProblems found(problems);
+    std::vector<NodeId> leaves;
+    tree.leaves(leaves);
+    const DeferredMap deferred_in = deferred_entries(mesh, tree, leaves, found);
+    std::unordered_map<NodeId, std::int32_t> expected;
+    bool outgrew = false;
+    std::vector<NodeId> stack;
+    mesh::for_each_triangle(mesh, [&](mesh::TriangleId id, const mesh::Triangle& t) {
+        const geometry::Circle c =
+            geometry::circumcircle(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]));
+        const CellRecord record = cell_record(tree, c.centre, c.radius_squared, outgrew);
+        const std::uint32_t i = mesh::index(id);
+        check_counted_or_deferred(tree, i, t, c, record, deferred_in, found);
+        if (t.user_tag == counted_tag && record != 0)
+            expect_counts(tree, i, record, expected, found);
+        check_relation_9(tree, i, c, stack, found);
+    });
+    check_counters(tree, expected, found);
+    check_leaves(tree, leaves, found);
 }
 
 }  // namespace gpdr::parallel

@@ -295,121 +295,178 @@ bool arrived(std::vector<VertexId>& targets, VertexId v) {
     return true;
 }
 
+// A subsegment x-y that blocks the walk from the current vertex toward the
+// target, and where the two meet.
+struct Blocker {
+    EdgeRef edge;  // x -> y, in the last triangle the walk crossed
+    VertexId x, y;
+    SubsegmentInfo info;  // x-y's side-table entry
+    Point p;              // the crossing point (rounded)
+    double near;          // squared distance within which p counts as a vertex
+    double dx, dy;        // squared distances from p to x and to y
+};
+
+Blocker find_blocker(const Mesh& mesh, EdgeRef edge, VertexId current, VertexId target) {
+    Blocker k;
+    k.edge = edge;
+    k.x = mesh.origin(edge);
+    k.y = mesh.destination(edge);
+    if (const SubsegmentInfo* found = mesh.subsegments().find(k.x, k.y)) k.info = *found;
+    k.p = geometry::segment_intersection(mesh.point(current), mesh.point(target), mesh.point(k.x),
+                                         mesh.point(k.y));
+    k.near = 1e-24 * std::max(geometry::squared_distance(mesh.point(k.x), mesh.point(k.y)),
+                              geometry::squared_distance(mesh.point(current), mesh.point(target)));
+    k.dx = geometry::squared_distance(k.p, mesh.point(k.x));
+    k.dy = geometry::squared_distance(k.p, mesh.point(k.y));
+    return k;
+}
+
+// The insertion of one piece a-b of a segment: a walk from a that aims at
+// the last of buf.targets (b, then the vertices the piece is bent to on the
+// way), with `current` the vertex reached and `t` a triangle with corner
+// `current`.  `record` says whether events are reported.
+struct PieceInsertion {
+    Pool& pool;
+    Mesh& mesh;
+    SegmentBuffer& buf;
+    const SubsegmentInfo& info;
+    bool record;
+    VertexId current = no_vertex;
+    TriangleId t = no_triangle;
+
+    // Returns a triangle with corner b.
+    TriangleId run(VertexId a, VertexId b, TriangleId start) {
+        buf.targets.clear();
+        buf.targets.push_back(b);
+        current = a;
+        t = start;
+        buf.path.clear();
+        buf.path.push_back(a);
+        // Each step passes a vertex, creates one or removes a constraint, so
+        // the loop is bounded; the guard turns a bug into an error, never a
+        // hang.
+        std::uint64_t steps_left = 8ull * mesh.vertex_end() + 1024;
+        while (!buf.targets.empty()) {
+            if (--steps_left == 0)
+                throw InternalError("segment insertion from vertex " + vertex_name(a) + " to " +
+                                    vertex_name(b) + " does not terminate");
+            const VertexId target = buf.targets.back();
+            const Step step = find_wedge(mesh, t, current, target);
+            if (step.kind != Step::Kind::cross) {
+                follow(step);
+                continue;
+            }
+            const Walk w = walk(mesh, current, target, step.edge, buf);
+            if (w.blocked)
+                get_past(find_blocker(mesh, w.edge, current, target), target);
+            else
+                cross_strip(w.end);
+        }
+        return t;
+    }
+
+    void report_through(VertexId v) {
+        if (record)
+            buf.events.push_back({SegmentEvent::Kind::through_vertex, v, {}, {}, {}, info.segment});
+    }
+
+    void move_to(VertexId v, TriangleId with_v) {
+        t = with_v;
+        current = v;
+        buf.path.push_back(current);
+    }
+
+    // The edge to the target, or to a vertex on the way, exists: it becomes
+    // a subsegment.
+    void follow(const Step& step) {
+        make_subsegment(mesh, step.edge, current, step.vertex, info);
+        if (step.kind == Step::Kind::edge)
+            buf.targets.pop_back();
+        else if (!arrived(buf.targets, step.vertex))
+            report_through(step.vertex);
+        move_to(step.vertex, step.edge.triangle());
+    }
+
+    // Triangles cross the way up to vertex `end`: their strip is
+    // retriangulated with current-end as a subsegment.
+    void cross_strip(VertexId end) {
+        const TriangleId with_end = retriangulate(pool, current, end, info, buf);
+        if (!arrived(buf.targets, end)) report_through(end);
+        move_to(end, with_end);
+    }
+
+    // Subsegment k.edge crosses the way: split it where the segment meets
+    // it, then aim at that vertex first; or, where the crossing is (within
+    // rounding) a vertex already there, use that vertex.
+    void get_past(const Blocker& k, VertexId target) {
+        if ((!can_split_at(mesh, k.edge, k.p) || std::min(k.dx, k.dy) <= k.near) && bend_to_end(k))
+            return;
+        for (const VertexId v : {target, current}) {
+            if (geometry::squared_distance(k.p, mesh.point(v)) > k.near) continue;
+            split_blocker_at(k, v);
+            return;
+        }
+        split_blocker(k);
+    }
+
+    // The crossing is (within rounding) an end of x-y, or cannot be
+    // represented beside a sliver: the segment goes through an end instead,
+    // the nearer one not passed already (going back would cycle).  False
+    // when both ends are passed.
+    bool bend_to_end(const Blocker& k) {
+        const VertexId first = k.dx <= k.dy ? k.x : k.y, second = k.dx <= k.dy ? k.y : k.x;
+        const auto passed = [&](VertexId v) {
+            return std::find(buf.path.begin(), buf.path.end(), v) != buf.path.end();
+        };
+        const VertexId snap = !passed(first) ? first : !passed(second) ? second : no_vertex;
+        if (snap == no_vertex) return false;
+        buf.targets.push_back(snap);
+        report_through(snap);
+        return true;
+    }
+
+    // The crossing is (within rounding) vertex v of the segment: x-y is
+    // split there instead, as two pieces recovered after this segment, and
+    // the walk goes on as if x-y were absent.
+    void split_blocker_at(const Blocker& k, VertexId v) {
+        mesh.triangle(k.edge.triangle()).set_subsegment(k.edge.edge(), false);
+        const EdgeRef twin = mesh.neighbour(k.edge);
+        if (!twin.is_none()) mesh.triangle(twin.triangle()).set_subsegment(twin.edge(), false);
+        mesh.subsegments().erase(k.x, k.y);
+        // Without the constraint x-y the mesh may not be constrained
+        // Delaunay there any more; the strip retriangulation needs it.
+        buf.insert.created.clear();
+        buf.insert.created.push_back(k.edge.triangle());
+        if (!twin.is_none()) buf.insert.created.push_back(twin.triangle());
+        lawson_flips(mesh, buf.insert);
+        for (TriangleId c : buf.insert.created) note_corners(mesh, buf, c);
+        t = find_start(mesh, current, k.edge.triangle(), buf);
+        buf.pending.push_back({k.x, v, k.info});
+        buf.pending.push_back({v, k.y, k.info});
+        if (record)
+            buf.events.push_back(
+                {SegmentEvent::Kind::through_vertex, v, k.x, k.y, k.info, k.info.segment});
+    }
+
+    // A new vertex at the crossing splits x-y; it becomes the next target.
+    void split_blocker(const Blocker& k) {
+        const InsertResult r = split_subsegment(pool, k.edge, k.p, VertexKind::segment, buf.insert);
+        for (TriangleId c : buf.insert.created) note_corners(mesh, buf, c);
+        if (record)
+            buf.events.push_back(
+                {SegmentEvent::Kind::crossing, r.vertex, k.x, k.y, k.info, info.segment});
+        buf.targets.push_back(r.vertex);
+        t = find_start(mesh, current, buf.insert.created.front(), buf);
+    }
+};
+
 // The loop of insert_segment for one piece a-b, starting from triangle t
 // (corner a); `record` says whether events are reported.  Returns a triangle
 // with corner b.
 TriangleId insert_piece(Pool& pool, VertexId a, VertexId b, const SubsegmentInfo& info,
                         TriangleId t, SegmentBuffer& buf, bool record) {
-    Mesh& mesh = pool.mesh();
-    auto& targets = buf.targets;
-    targets.clear();
-    targets.push_back(b);
-    VertexId current = a;
-    VertexId split_at = no_vertex;
-    buf.path.clear();
-    buf.path.push_back(a);
-    // Each step passes a vertex, creates one or removes a constraint, so the
-    // loop is bounded; the guard turns a bug into an error, never a hang.
-    std::uint64_t steps_left = 8ull * mesh.vertex_end() + 1024;
-    while (!targets.empty()) {
-        if (--steps_left == 0)
-            throw InternalError("segment insertion from vertex " + vertex_name(a) + " to " +
-                                vertex_name(b) + " does not terminate");
-        const VertexId target = targets.back();
-        const Step step = find_wedge(mesh, t, current, target);
-        if (step.kind != Step::Kind::cross) {
-            make_subsegment(mesh, step.edge, current, step.vertex, info);
-            if (step.kind == Step::Kind::edge)
-                targets.pop_back();
-            else if (!arrived(targets, step.vertex) && record)
-                buf.events.push_back(
-                    {SegmentEvent::Kind::through_vertex, step.vertex, {}, {}, {}, info.segment});
-            t = step.edge.triangle();
-            current = step.vertex;
-            buf.path.push_back(current);
-            continue;
-        }
-        const Walk w = walk(mesh, current, target, step.edge, buf);
-        if (w.blocked) {
-            // Split the crossing subsegment where the segment meets it, then
-            // aim at that vertex first.
-            const VertexId x = mesh.origin(w.edge), y = mesh.destination(w.edge);
-            SubsegmentInfo crossed;
-            if (const SubsegmentInfo* found = mesh.subsegments().find(x, y)) crossed = *found;
-            const Point p = geometry::segment_intersection(mesh.point(current), mesh.point(target),
-                                                           mesh.point(x), mesh.point(y));
-            const double near =
-                1e-24 *
-                std::max(geometry::squared_distance(mesh.point(x), mesh.point(y)),
-                         geometry::squared_distance(mesh.point(current), mesh.point(target)));
-            const double dx = geometry::squared_distance(p, mesh.point(x));
-            const double dy = geometry::squared_distance(p, mesh.point(y));
-            if (!can_split_at(mesh, w.edge, p) || std::min(dx, dy) <= near) {
-                // The crossing is (within rounding) an end of x-y, or cannot
-                // be represented beside a sliver: the segment goes through
-                // an end instead, the nearer one not passed already (going
-                // back would cycle).
-                const VertexId first = dx <= dy ? x : y, second = dx <= dy ? y : x;
-                const auto passed = [&](VertexId v) {
-                    return std::find(buf.path.begin(), buf.path.end(), v) != buf.path.end();
-                };
-                const VertexId snap = !passed(first) ? first : !passed(second) ? second : no_vertex;
-                if (snap != no_vertex) {
-                    targets.push_back(snap);
-                    if (record)
-                        buf.events.push_back(
-                            {SegmentEvent::Kind::through_vertex, snap, {}, {}, {}, info.segment});
-                    continue;
-                }
-            }
-            for (const VertexId v : {target, current}) {
-                if (geometry::squared_distance(p, mesh.point(v)) > near) continue;
-                // The crossing is (within rounding) vertex v of the segment:
-                // x-y is split there instead, as two pieces recovered after
-                // this segment, and the walk goes on as if x-y were absent.
-                mesh.triangle(w.edge.triangle()).set_subsegment(w.edge.edge(), false);
-                const EdgeRef twin = mesh.neighbour(w.edge);
-                if (!twin.is_none())
-                    mesh.triangle(twin.triangle()).set_subsegment(twin.edge(), false);
-                mesh.subsegments().erase(x, y);
-                // Without the constraint x-y the mesh may not be constrained
-                // Delaunay there any more; the strip retriangulation needs it.
-                buf.insert.created.clear();
-                buf.insert.created.push_back(w.edge.triangle());
-                if (!twin.is_none()) buf.insert.created.push_back(twin.triangle());
-                lawson_flips(mesh, buf.insert);
-                for (TriangleId c : buf.insert.created) note_corners(mesh, buf, c);
-                t = find_start(mesh, current, w.edge.triangle(), buf);
-                buf.pending.push_back({x, v, crossed});
-                buf.pending.push_back({v, y, crossed});
-                if (record)
-                    buf.events.push_back(
-                        {SegmentEvent::Kind::through_vertex, v, x, y, crossed, crossed.segment});
-                split_at = v;
-                break;
-            }
-            if (split_at != no_vertex) {
-                split_at = no_vertex;
-                continue;
-            }
-            const InsertResult r =
-                split_subsegment(pool, w.edge, p, VertexKind::segment, buf.insert);
-            for (TriangleId c : buf.insert.created) note_corners(mesh, buf, c);
-            if (record)
-                buf.events.push_back(
-                    {SegmentEvent::Kind::crossing, r.vertex, x, y, crossed, info.segment});
-            targets.push_back(r.vertex);
-            t = find_start(mesh, current, buf.insert.created.front(), buf);
-            continue;
-        }
-        t = retriangulate(pool, current, w.end, info, buf);
-        if (!arrived(targets, w.end) && record)
-            buf.events.push_back(
-                {SegmentEvent::Kind::through_vertex, w.end, {}, {}, {}, info.segment});
-        current = w.end;
-        buf.path.push_back(current);
-    }
-    return t;
+    PieceInsertion piece{pool, pool.mesh(), buf, info, record};
+    return piece.run(a, b, t);
 }
 
 }  // namespace
@@ -481,10 +538,9 @@ double parameter(const Pslg& pslg, const std::vector<std::uint32_t>& kept, std::
     return ((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy);
 }
 
-}  // namespace
-
-mesh::Mesh triangulate_segments(const Pslg& pslg, CdtReport& report) {
-    report = CdtReport{};
+// The segment list is well formed: pairs of ends naming vertices, and as
+// many markers as segments (or none).
+void check_segment_list(const Pslg& pslg) {
     const std::size_t n = pslg.points.size();
     const std::size_t segments = pslg.segment_count();
     if (pslg.segments.size() % 2 != 0)
@@ -498,6 +554,70 @@ mesh::Mesh triangulate_segments(const Pslg& pslg, CdtReport& report) {
                 throw GeometryError("segment " + std::to_string(s) + " names vertex " +
                                     std::to_string(pslg.segments[2 * s + k]) +
                                     " but there are only " + std::to_string(n) + " vertices");
+}
+
+// Inserts the crossing points the arrangement found as vertices like the
+// input's (Triangle's rule: the segments' pieces end there, and refinement
+// protects them as corners), each reported as a new vertex of both its
+// segments.  Returns a live triangle.
+TriangleId insert_crossings(Pool& pool, const Pslg& pslg, const std::vector<std::uint32_t>& kept,
+                            const std::vector<Point>& points, const ArrangementReport& arranged,
+                            SegmentBuffer& buf, CdtReport& report) {
+    const Mesh& mesh = pool.mesh();
+    TriangleId hint = no_triangle;
+    for (std::uint32_t i = 0; i < mesh.triangle_end() && hint == no_triangle; ++i)
+        if (mesh.triangle(TriangleId{i}).live()) hint = TriangleId{i};
+    for (const ArrangementReport::Crossing& c : arranged.crossings) {
+        const InsertResult r =
+            insert_point(pool, points[c.vertex], VertexKind::input, hint, buf.insert);
+        if (r.status != InsertStatus::inserted || index(r.vertex) != c.vertex)
+            throw GeometryError(
+                "the crossing point of segments " + std::to_string(c.other_segment) + " and " +
+                std::to_string(c.segment) + " rounds to a point outside the input's convex hull");
+        hint = buf.insert.created.front();
+        NewSegmentVertex nv;
+        nv.vertex = r.vertex;
+        nv.segment = c.segment;
+        nv.t = parameter(pslg, kept, c.segment, points[c.vertex]);
+        nv.other_segment = c.other_segment;
+        nv.other_t = parameter(pslg, kept, c.other_segment, points[c.vertex]);
+        report.new_vertices.push_back(nv);
+    }
+    return hint;
+}
+
+// What inserting piece k reported (buf.events), into `report`.  The pieces
+// neither cross nor pass through vertices, so insertion reports nothing,
+// unless a vertex swallowed by a retriangulated strip was put back exactly
+// on a piece (exact, so still reported here) or an earlier piece's
+// constraint must be split.
+void report_events(const Mesh& mesh, const Pslg& pslg, const std::vector<std::uint32_t>& kept,
+                   std::uint32_t k, const SegmentBuffer& buf, CdtReport& report) {
+    const SegmentPiece& piece = report.pieces[k];
+    for (const SegmentEvent& e : buf.events) {
+        const std::uint32_t segment = e.segment == SubsegmentInfo::no_segment ? k : e.segment;
+        if (e.kind == SegmentEvent::Kind::through_vertex) {
+            report.segments_through_vertices.emplace_back(report.pieces[segment].segment, e.vertex);
+            continue;
+        }
+        NewSegmentVertex nv;
+        nv.vertex = e.vertex;
+        nv.segment = piece.segment;
+        nv.t = parameter(pslg, kept, piece.segment, mesh.point(e.vertex));
+        if (e.crossed.segment != SubsegmentInfo::no_segment) {
+            nv.other_segment = report.pieces[e.crossed.segment].segment;
+            nv.other_t = parameter(pslg, kept, nv.other_segment, mesh.point(e.vertex));
+        }
+        report.new_vertices.push_back(nv);
+    }
+}
+
+}  // namespace
+
+mesh::Mesh triangulate_segments(const Pslg& pslg, CdtReport& report) {
+    report = CdtReport{};
+    check_segment_list(pslg);
+    const std::size_t n = pslg.points.size();
 
     DelaunayReport dr;
     Mesh mesh = delaunay(pslg.points, dr);
@@ -522,55 +642,14 @@ mesh::Mesh triangulate_segments(const Pslg& pslg, CdtReport& report) {
 
     Pool pool(mesh);
     SegmentBuffer buf;
-    // Crossing points are vertices like the input's (Triangle's rule: the
-    // segments' pieces end there, and refinement protects them as corners).
-    TriangleId hint = no_triangle;
-    for (std::uint32_t i = 0; i < mesh.triangle_end() && hint == no_triangle; ++i)
-        if (mesh.triangle(TriangleId{i}).live()) hint = TriangleId{i};
-    for (const ArrangementReport::Crossing& c : arranged.crossings) {
-        const InsertResult r =
-            insert_point(pool, points[c.vertex], VertexKind::input, hint, buf.insert);
-        if (r.status != InsertStatus::inserted || index(r.vertex) != c.vertex)
-            throw GeometryError(
-                "the crossing point of segments " + std::to_string(c.other_segment) + " and " +
-                std::to_string(c.segment) + " rounds to a point outside the input's convex hull");
-        hint = buf.insert.created.front();
-        NewSegmentVertex nv;
-        nv.vertex = r.vertex;
-        nv.segment = c.segment;
-        nv.t = parameter(pslg, kept, c.segment, points[c.vertex]);
-        nv.other_segment = c.other_segment;
-        nv.other_t = parameter(pslg, kept, c.other_segment, points[c.vertex]);
-        report.new_vertices.push_back(nv);
-    }
-
+    TriangleId hint = insert_crossings(pool, pslg, kept, points, arranged, buf, report);
     track_corners(mesh, buf);
     mesh.subsegments().reserve(report.pieces.size() + report.pieces.size() / 4);
     for (std::uint32_t k = 0; k < report.pieces.size(); ++k) {
         const SegmentPiece& piece = report.pieces[k];
         const SubsegmentInfo info{piece.marker, k};
         hint = insert_segment(pool, VertexId{piece.a}, VertexId{piece.b}, info, hint, buf);
-        // The pieces neither cross nor pass through vertices, so insertion
-        // reports nothing, unless a vertex swallowed by a retriangulated
-        // strip was put back exactly on a piece (exact, so still reported
-        // here) or an earlier piece's constraint must be split.
-        for (const SegmentEvent& e : buf.events) {
-            const std::uint32_t segment = e.segment == SubsegmentInfo::no_segment ? k : e.segment;
-            if (e.kind == SegmentEvent::Kind::through_vertex) {
-                report.segments_through_vertices.emplace_back(report.pieces[segment].segment,
-                                                              e.vertex);
-                continue;
-            }
-            NewSegmentVertex nv;
-            nv.vertex = e.vertex;
-            nv.segment = piece.segment;
-            nv.t = parameter(pslg, kept, piece.segment, mesh.point(e.vertex));
-            if (e.crossed.segment != SubsegmentInfo::no_segment) {
-                nv.other_segment = report.pieces[e.crossed.segment].segment;
-                nv.other_t = parameter(pslg, kept, nv.other_segment, mesh.point(e.vertex));
-            }
-            report.new_vertices.push_back(nv);
-        }
+        report_events(mesh, pslg, kept, k, buf, report);
     }
     return mesh;
 }

@@ -80,10 +80,9 @@ void remove_ghosts(Pool& pool) {
     }
 }
 
-}  // namespace
-
-mesh::Mesh delaunay(std::span<const Point> points, DelaunayReport& report) {
-    report.duplicates.clear();
+// Every coordinate is a finite number, and the vertex ids can name every
+// point.
+void check_points(std::span<const Point> points) {
     const std::size_t n = points.size();
     for (std::size_t i = 0; i < n; ++i)
         if (!std::isfinite(points[i].x) || !std::isfinite(points[i].y))
@@ -91,11 +90,14 @@ mesh::Mesh delaunay(std::span<const Point> points, DelaunayReport& report) {
                                 " has a coordinate that is not a finite number");
     if (n >= index(ghost_vertex))
         throw GeometryError("too many vertices (" + std::to_string(n) + ")");
+}
 
-    const std::vector<std::uint32_t> order = brio_order(points);
-
-    // The first triangle: the first point, the first one different from it,
-    // the first one off their line.
+// The first triangle, as positions in `order`: the first point (0), the
+// first one different from it (ib), the first one off their line (ic).
+// Throws when there is none.
+std::pair<std::size_t, std::size_t> first_triangle(std::span<const Point> points,
+                                                   const std::vector<std::uint32_t>& order) {
+    const std::size_t n = points.size();
     std::size_t ib = 0, ic = 0;
     if (n > 0) {
         const Point& pa = points[order[0]];
@@ -113,11 +115,89 @@ mesh::Mesh delaunay(std::span<const Point> points, DelaunayReport& report) {
         throw GeometryError("all " + std::to_string(distinct) +
                             " distinct input vertices are collinear; no triangle can be formed");
     }
+    return {ib, ic};
+}
+
+// Duplicate -> the vertex it lost to (input ids).
+using KeptBy = std::unordered_map<std::uint32_t, std::uint32_t>;
+
+// Inserts every vertex (vertex id = position in `order`) after the first
+// triangle (0, ib, ic).  Of two equal points the lower input index stays in
+// the triangulation; the other is recorded in the result.
+KeptBy insert_vertices(Pool& pool, const std::vector<std::uint32_t>& order, std::size_t ib,
+                       std::size_t ic) {
+    Mesh& mesh = pool.mesh();
+    KeptBy kept_by;
+    VertexId a{0}, b{static_cast<std::uint32_t>(ib)}, c{static_cast<std::uint32_t>(ic)};
+    if (geometry::orient2d(mesh.point(a), mesh.point(b), mesh.point(c)) < 0) std::swap(b, c);
+    TriangleId hint = start(pool, a, b, c);
+
+    InsertBuffer buffer;
+    const std::size_t n = order.size();
+    for (std::size_t i = 1; i < n; ++i) {
+        if (i == ib || i == ic) continue;
+        const VertexId v{static_cast<std::uint32_t>(i)};
+        const LocateResult where = locate(mesh, mesh.point(v), hint, buffer.random_state);
+        if (where.where == Location::on_vertex) {
+            // Keep the lower input index in the triangulation.
+            const VertexId there = mesh.triangle(where.triangle).v[where.index];
+            if (order[i] < order[index(there)]) {
+                rename_vertex(mesh, where.triangle, there, v);
+                kept_by[order[index(there)]] = order[i];
+            } else {
+                kept_by[order[i]] = order[index(there)];
+            }
+            hint = where.triangle;
+            continue;
+        }
+        insert_located(pool, v, where, buffer);
+        hint = buffer.created.front();
+    }
+    return kept_by;
+}
+
+// From insertion order back to input numbering; the duplicates become
+// VertexKind::duplicate.
+void renumber_to_input(Mesh& mesh, std::span<const Point> points,
+                       const std::vector<std::uint32_t>& order, const KeptBy& kept_by) {
+    const std::uint32_t end = mesh.triangle_end();
+    for (std::uint32_t t = 0; t < end; ++t) {
+        Triangle& r = mesh.triangle(TriangleId{t});
+        if (!r.live()) continue;
+        for (VertexId& v : r.v) v = VertexId{order[index(v)]};
+    }
+    for (std::size_t i = 0; i < points.size(); ++i)
+        mesh.set_point(VertexId{static_cast<std::uint32_t>(i)}, points[i]);
+    for (auto [lost, kept] : kept_by) mesh.set_kind(VertexId{lost}, VertexKind::duplicate);
+}
+
+// The (duplicate, vertex kept) pairs, sorted.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> duplicate_pairs(const KeptBy& kept_by) {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> duplicates;
+    duplicates.reserve(kept_by.size());
+    for (auto [lost, kept] : kept_by) {
+        // A kept vertex may itself have lost later to a lower index.
+        for (auto it = kept_by.find(kept); it != kept_by.end(); it = kept_by.find(kept))
+            kept = it->second;
+        duplicates.emplace_back(lost, kept);
+    }
+    std::sort(duplicates.begin(), duplicates.end());
+    return duplicates;
+}
+
+}  // namespace
+
+mesh::Mesh delaunay(std::span<const Point> points, DelaunayReport& report) {
+    report.duplicates.clear();
+    check_points(points);
+    const std::vector<std::uint32_t> order = brio_order(points);
+    const auto [ib, ic] = first_triangle(points, order);
 
     // Work on the points in insertion order: vertex id = position in
     // `order`, so consecutive insertions touch neighbouring memory (the
     // input order is random with respect to the curve: fetching coordinates
     // by input index was a cache miss per predicate).  Renumbered at the end.
+    const std::size_t n = points.size();
     Mesh mesh;
     mesh.claim_vertices(static_cast<std::uint32_t>(n));
     for (std::size_t i = 0; i < n; ++i) {
@@ -125,56 +205,14 @@ mesh::Mesh delaunay(std::span<const Point> points, DelaunayReport& report) {
         mesh.set_point(v, points[order[i]]);
         mesh.set_kind(v, VertexKind::input);
     }
-    std::unordered_map<std::uint32_t, std::uint32_t>
-        kept_by;  // duplicate -> the vertex it lost to (input ids)
+    KeptBy kept_by;
     {
         Pool pool(mesh);
-        VertexId a{0}, b{static_cast<std::uint32_t>(ib)}, c{static_cast<std::uint32_t>(ic)};
-        if (geometry::orient2d(mesh.point(a), mesh.point(b), mesh.point(c)) < 0) std::swap(b, c);
-        TriangleId hint = start(pool, a, b, c);
-
-        InsertBuffer buffer;
-        for (std::size_t i = 1; i < n; ++i) {
-            if (i == ib || i == ic) continue;
-            const VertexId v{static_cast<std::uint32_t>(i)};
-            const LocateResult where = locate(mesh, mesh.point(v), hint, buffer.random_state);
-            if (where.where == Location::on_vertex) {
-                // Keep the lower input index in the triangulation.
-                const VertexId there = mesh.triangle(where.triangle).v[where.index];
-                if (order[i] < order[index(there)]) {
-                    rename_vertex(mesh, where.triangle, there, v);
-                    kept_by[order[index(there)]] = order[i];
-                } else {
-                    kept_by[order[i]] = order[index(there)];
-                }
-                hint = where.triangle;
-                continue;
-            }
-            insert_located(pool, v, where, buffer);
-            hint = buffer.created.front();
-        }
+        kept_by = insert_vertices(pool, order, ib, ic);
         remove_ghosts(pool);
-
-        // Back to input numbering.
-        const std::uint32_t end = mesh.triangle_end();
-        for (std::uint32_t t = 0; t < end; ++t) {
-            Triangle& r = mesh.triangle(TriangleId{t});
-            if (!r.live()) continue;
-            for (VertexId& v : r.v) v = VertexId{order[index(v)]};
-        }
-        for (std::size_t i = 0; i < n; ++i)
-            mesh.set_point(VertexId{static_cast<std::uint32_t>(i)}, points[i]);
-        for (auto [lost, kept] : kept_by) mesh.set_kind(VertexId{lost}, VertexKind::duplicate);
+        renumber_to_input(mesh, points, order, kept_by);
     }
-
-    report.duplicates.reserve(kept_by.size());
-    for (auto [lost, kept] : kept_by) {
-        // A kept vertex may itself have lost later to a lower index.
-        for (auto it = kept_by.find(kept); it != kept_by.end(); it = kept_by.find(kept))
-            kept = it->second;
-        report.duplicates.emplace_back(lost, kept);
-    }
-    std::sort(report.duplicates.begin(), report.duplicates.end());
+    report.duplicates = duplicate_pairs(kept_by);
     return mesh;
 }
 

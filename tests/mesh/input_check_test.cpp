@@ -143,8 +143,9 @@ TEST_CASE("the input check finds what is wrong", "[mesh][input_check]") {
         // The test rejects the triangle whose corners include (1, 1).
         o.unsuitable = [&](TriangleId t) {
             const Triangle& r = mesh.triangle(t);
-            return std::any_of(std::begin(r.v), std::end(r.v),
-                               [&](VertexId v) { return mesh.point(v) == Point{1, 1}; });
+            return std::any_of(std::begin(r.v), std::end(r.v), [&](VertexId v) {
+                return mesh.point(v) == Point{1, 1};
+            });
         };
         const auto p = check_against_input(mesh, g, o);
         CHECK(mentions(p, "(1, 1) (0.5, 0.4) is one triunsuitable() asks to refine"));

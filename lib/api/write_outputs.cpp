@@ -13,6 +13,7 @@
 #include <vector>
 
 #include <gpdr/io.hpp>
+#include <gpdr/mesh_formats.hpp>
 
 #include "api/job_stages.hpp"
 #include "io/temporary_files.hpp"
@@ -111,6 +112,21 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
     const EdgeSet& edges = prepared.edges;
     const VoronoiDiagram& voronoi = prepared.voronoi;
     const std::uint64_t edge_count = prepared.edge_count;
+    const bool for_others = o.write_vtk || o.write_gmsh;
+    const SegmentSet segments =
+        want_poly || o.write_gmsh ? subsegments_of(mesh, prepared) : SegmentSet{};
+    // What the files for other programs read: the arrays, and the
+    // triangles once per pass they make (a fresh source each time).
+    io::MeshExport exported;
+    if (for_others) {
+        const io::EleSource first = triangle_source(arrays);
+        exported.nodes = &arrays.nodes;
+        exported.triangle_count = first.count;
+        exported.corners_per_triangle = first.corners_per_triangle;
+        exported.attribute_count = first.attribute_count;
+        exported.triangles = [&arrays] { return triangle_source(arrays); };
+        exported.segments = &segments;
+    }
 
     // Each job keeps what it needs by value or refers to data that stays
     // put until write_all returns; all of it is only read.
@@ -134,7 +150,7 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
             poly.nodes.attribute_count = arrays.nodes.attribute_count;
             // write_poly() takes the header's marker column from nodes.markers.
             if (arrays.nodes.has_markers()) poly.nodes.markers.assign(1, 0);
-            poly.segments = subsegments_of(mesh, prepared);
+            poly.segments = segments;
             if (request.poly) {
                 poly.holes = request.poly->holes;
                 poly.regions = request.poly->regions;
@@ -163,6 +179,14 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
     if (o.write_off)
         add(names.out_off, [&](io::OutputTransaction& out) {
             io::write_off(out, names.out_off, arrays.nodes, arrays.triangles, edge_count, format);
+        });
+    if (o.write_vtk)
+        add(names.out_vtu, [&](io::OutputTransaction& out) {
+            io::write_vtu(out, names.out_vtu, exported, format);
+        });
+    if (o.write_gmsh)
+        add(names.out_msh, [&](io::OutputTransaction& out) {
+            io::write_msh(out, names.out_msh, exported, format);
         });
     write_all(jobs, parallel::thread_count(o.threads));
     std::vector<std::string> written;

@@ -35,7 +35,7 @@ struct FileJob {
 // were written.  A failure rethrows the first failing job's error (in job
 // order, whatever the timing), and the transactions' destructors remove
 // every temporary file.
-void write_all(const std::vector<FileJob>& jobs, unsigned threads) {
+void write_all(const std::vector<FileJob>& jobs, unsigned threads, Progress* progress) {
     const std::size_t n = jobs.size();
     const auto transactions = std::make_unique<io::OutputTransaction[]>(n);
     std::vector<std::exception_ptr> failures(n);
@@ -44,6 +44,7 @@ void write_all(const std::vector<FileJob>& jobs, unsigned threads) {
         for (std::size_t j; (j = next.fetch_add(1)) < n;) {
             try {
                 jobs[j].write(transactions[j]);
+                if (progress != nullptr) progress->file_done();
             } catch (...) {
                 failures[j] = std::current_exception();
             }
@@ -102,6 +103,7 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
                                        MeshArrays& arrays) {
     const Options& o = *request.options;
     const FileNames& names = *request.names;
+    if (request.progress != nullptr) request.progress->enter(Progress::Stage::writing);
     const io::WriteFormat format{request.base, !o.no_boundary_markers,
                                  o.command.empty() ? std::string("gpdr") : o.command,
                                  request.stamp};
@@ -188,7 +190,8 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
         add(names.out_msh, [&](io::OutputTransaction& out) {
             io::write_msh(out, names.out_msh, exported, format);
         });
-    write_all(jobs, parallel::thread_count(o.threads));
+    if (request.progress != nullptr) request.progress->set_files(jobs.size());
+    write_all(jobs, parallel::thread_count(o.threads), request.progress);
     std::vector<std::string> written;
     for (const FileJob& j : jobs) written.push_back(j.target);
     return written;

@@ -204,8 +204,9 @@ void write_msh(OutputTransaction& tx, const std::string& path, const MeshExport&
     fmt::format_to(out, "$EndElements\n");
 
     if (format.markers && nodes.has_markers())
-        put_node_data(file, "boundary_marker", n,
-                      [&nodes](Out o, std::size_t v) { fmt::format_to(o, "{}", nodes.markers[v]); });
+        put_node_data(file, "boundary_marker", n, [&nodes](Out o, std::size_t v) {
+            fmt::format_to(o, "{}", nodes.markers[v]);
+        });
     for (std::uint32_t a = 0; a < nodes.attribute_count; ++a)
         put_node_data(file, fmt::format("attribute_{}", a), n, [&nodes, a](Out o, std::size_t v) {
             fmt::format_to(o, "{}", nodes.attributes[v * nodes.attribute_count + a]);

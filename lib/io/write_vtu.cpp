@@ -122,10 +122,10 @@ std::vector<Array> arrays_of(const MeshExport& mesh, const WriteFormat& format) 
     for (std::uint32_t a = 0; a < mesh.attribute_count; ++a)
         arrays.push_back({S::cell_data, fmt::format("region_attribute_{}", a), "Float64", 1, 8 * m,
                           [&mesh, a](File& f) {
-                              append_per_triangle(f, mesh, [a](const std::uint32_t*,
-                                                               const double* attributes) {
-                                  return attributes[a];
-                              });
+                              append_per_triangle(
+                                  f, mesh, [a](const std::uint32_t*, const double* attributes) {
+                                      return attributes[a];
+                                  });
                           }});
     const double* xy = nodes.xy.data();
     arrays.push_back({S::cell_data, "min_angle", "Float64", 1, 8 * m, [&mesh, xy](File& f) {

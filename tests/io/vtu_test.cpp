@@ -100,8 +100,7 @@ TEST_CASE("a .vtu file reads back as the mesh written", "[io][vtu]") {
           std::vector<std::int32_t>{1, 1, 7, 1, 0});
     CHECK(vtu.values<double>("attribute_0", "Float64") ==
           std::vector<double>{0.5, 1.5, 2.5, 3.5, 4.5});
-    CHECK(vtu.values<double>("attribute_1", "Float64") ==
-          std::vector<double>{-1, -2, -3, -4, -5});
+    CHECK(vtu.values<double>("attribute_1", "Float64") == std::vector<double>{-1, -2, -3, -4, -5});
     CHECK(!vtu.has("attribute_2"));
 
     CHECK(vtu.array("region_attribute_0").section == "CellData");

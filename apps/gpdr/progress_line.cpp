@@ -36,14 +36,15 @@ std::string progress_text(const Progress::Snapshot& s, double stage_seconds,
         case Progress::Stage::reading:
             return fmt::format("gpdr: reading, {}", time);
         case Progress::Stage::triangulating:
-            return fmt::format("gpdr: triangulating {} vertices, {}", count(double(s.input_vertices)),
-                               time);
+            return fmt::format("gpdr: triangulating {} vertices, {}",
+                               count(double(s.input_vertices)), time);
         case Progress::Stage::refining: {
             // A triangulation has about two triangles per vertex: the count
             // is estimated from the mesh's vertices, which it keeps in one
             // atomic, rather than counted.
             const double triangles = 2.0 * double(s.vertices);
-            const double added = 2.0 * double(s.vertices - std::min(s.vertices, stage_start_vertices));
+            const double added =
+                2.0 * double(s.vertices - std::min(s.vertices, stage_start_vertices));
             const double rate = stage_seconds > 0 ? added / stage_seconds : 0;
             return fmt::format("gpdr: refining, about {} triangles ({} a second), {}",
                                count(triangles), count(rate), time);

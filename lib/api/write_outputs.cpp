@@ -114,9 +114,9 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
     const EdgeSet& edges = prepared.edges;
     const VoronoiDiagram& voronoi = prepared.voronoi;
     const std::uint64_t edge_count = prepared.edge_count;
-    const bool for_others = o.write_vtk || o.write_gmsh;
+    const bool for_others = o.write_vtk || o.write_gmsh || o.write_svg;
     const SegmentSet segments =
-        want_poly || o.write_gmsh ? subsegments_of(mesh, prepared) : SegmentSet{};
+        want_poly || o.write_gmsh || o.write_svg ? subsegments_of(mesh, prepared) : SegmentSet{};
     // What the files for other programs read: the arrays, and the
     // triangles once per pass they make (a fresh source each time).
     io::MeshExport exported;
@@ -191,6 +191,10 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
             io::write_msh(out, names.out_msh, exported, format);
         });
     if (request.progress != nullptr) request.progress->set_files(jobs.size());
+    if (o.write_svg)
+        add(names.out_svg, [&](io::OutputTransaction& out) {
+            io::write_svg(out, names.out_svg, exported, format);
+        });
     write_all(jobs, parallel::thread_count(o.threads), request.progress);
     std::vector<std::string> written;
     for (const FileJob& j : jobs) written.push_back(j.target);

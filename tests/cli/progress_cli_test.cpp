@@ -99,8 +99,7 @@ TEST_CASE("a long run on a terminal shows a progress line and erases it", "[cli]
         CHECK(r.terminal.find("\x1b[K", at) - at - 1 <= 79);
 }
 
-TEST_CASE("no progress line when standard error is not a terminal, or with -Q",
-          "[cli][progress]") {
+TEST_CASE("no progress line when standard error is not a terminal, or with -Q", "[cli][progress]") {
     TempDir dir;
     fs::copy_file(project_samples() / "pipe.poly", dir / "pipe.poly");
     SECTION("standard error to a file") {

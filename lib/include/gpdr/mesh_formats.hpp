@@ -1,7 +1,7 @@
 #pragma once
 // Writing a finished mesh for other programs: VTK's XML unstructured grid
 // (.vtu, for ParaView, VisIt and meshio), gmsh's MSH 4.1 (.msh, for gmsh and
-// the solvers that read it) and a picture (.svg).  docs/file-formats.md
+// the solvers that read it) and a picture for people (.svg).  docs/file-formats.md
 // describes each file.
 //
 // These formats number from 0 (VTK) or 1 (gmsh) whatever the run's base,
@@ -50,6 +50,14 @@ void write_vtu(OutputTransaction& out, const std::string& path, const MeshExport
 // marker with a physical group each (positive markers only), node data
 // "boundary_marker" and "attribute_<i>".
 void write_msh(OutputTransaction& out, const std::string& path, const MeshExport& mesh,
+               const WriteFormat& format);
+
+// A picture of the mesh (write_svg.cpp): each triangle shaded by its
+// smallest angle, or by region when the triangles have attributes, with
+// the segments drawn heavier and a legend; a mesh too large to draw
+// triangle by triangle is shaded by its local triangle density instead.
+// The same mesh always gives the same bytes.
+void write_svg(OutputTransaction& out, const std::string& path, const MeshExport& mesh,
                const WriteFormat& format);
 
 }  // namespace gpdr::io

@@ -63,9 +63,10 @@ struct Options {
     // estimated to need more memory than is available.
     bool force = false;
     // Files for other programs (gpdr/mesh_formats.hpp): --vtk (.vtu),
-    // --gmsh (.msh).
+    // --gmsh (.msh), --svg (a picture of the mesh).
     bool write_vtk = false;
     bool write_gmsh = false;
+    bool write_svg = false;
 
     // The input name as given on the command line (last one wins).
     std::string input;

@@ -36,7 +36,9 @@ public:
     }
 
     // ---- the library's side --------------------------------------------
-    void enter(Stage stage) noexcept { stage_.store(static_cast<int>(stage), std::memory_order_relaxed); }
+    void enter(Stage stage) noexcept {
+        stage_.store(static_cast<int>(stage), std::memory_order_relaxed);
+    }
     void set_input_vertices(std::uint64_t n) noexcept {
         input_vertices_.store(n, std::memory_order_relaxed);
     }

@@ -6,6 +6,8 @@
 #include "progress_line.hpp"
 
 #include <algorithm>
+#include <cstdlib>
+#include <string_view>
 
 #include <unistd.h>
 
@@ -25,6 +27,10 @@ std::string count(double n) {
 }  // namespace
 
 bool wants_progress_line(const Options& options, std::FILE* err) {
+    // A "dumb" terminal (an editor's shell buffer) would print the escape
+    // sequence as text.
+    const char* term = std::getenv("TERM");
+    if (term != nullptr && std::string_view(term) == "dumb") return false;
     return !options.quiet && ::isatty(::fileno(err)) == 1;
 }
 

@@ -1,6 +1,6 @@
 // The progress line: a run of a few seconds on a terminal shows it on
-// standard error and erases it before the "Wrote" lines; the same run with
-// standard error going to a file, or with -Q, shows none.  The terminal is
+// standard error and erases it before the results; the same run with
+// standard error going to a file, on a dumb terminal, or with -Q, shows none.  The terminal is
 // a pseudo-terminal made with forkpty(), which, unlike script(1), needs no
 // standard input of its own (CI has none).
 
@@ -27,9 +27,10 @@ struct TerminalRun {
 };
 
 // Runs gpdr in `dir` with a pseudo-terminal as its standard input, output and
-// error, or with standard error sent to the file `stderr_file` when given.
+// error, or with standard error sent to the file `stderr_file` when given,
+// and TERM set to `term` (whatever the test's own environment says).
 TerminalRun run_on_terminal(const TempDir& dir, const std::vector<std::string>& args,
-                            const std::string& stderr_file = "") {
+                            const std::string& stderr_file = "", const char* term = "xterm") {
     int master = -1;
     winsize size{};
     size.ws_row = 24;
@@ -38,6 +39,7 @@ TerminalRun run_on_terminal(const TempDir& dir, const std::vector<std::string>& 
     REQUIRE(pid >= 0);
     if (pid == 0) {
         if (::chdir(dir.path().c_str()) != 0) ::_exit(127);
+        ::setenv("TERM", term, 1);
         if (!stderr_file.empty()) {
             const int fd = ::open(stderr_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
             if (fd < 0 || ::dup2(fd, 2) < 0) ::_exit(127);
@@ -99,7 +101,7 @@ TEST_CASE("a long run on a terminal shows a progress line and erases it", "[cli]
         CHECK(r.terminal.find("\x1b[K", at) - at - 1 <= 79);
 }
 
-TEST_CASE("no progress line when standard error is not a terminal, or with -Q", "[cli][progress]") {
+TEST_CASE("no progress line off a terminal, on a dumb one, or with -Q", "[cli][progress]") {
     TempDir dir;
     fs::copy_file(project_samples() / "pipe.poly", dir / "pipe.poly");
     SECTION("standard error to a file") {
@@ -111,6 +113,11 @@ TEST_CASE("no progress line when standard error is not a terminal, or with -Q", 
         const std::string err = TempDir::slurp(log);
         CHECK(err.find('\r') == std::string::npos);
         CHECK(err.find("gpdr: refining") == std::string::npos);
+    }
+    SECTION("a dumb terminal") {
+        const TerminalRun r = run_on_terminal(dir, long_run, "", "dumb");
+        REQUIRE(r.status == 0);
+        CHECK(r.terminal.empty());
     }
     SECTION("-Q") {
         std::vector<std::string> args = long_run;

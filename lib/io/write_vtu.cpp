@@ -3,10 +3,9 @@
 // formatting numbers.  The XML head lists every array with its byte offset
 // into the appended section; that section is '_' followed by each array as
 // a 64-bit byte count and the values, in the machine's byte order (which
-// the head names).  The triangles are read from the mesh once per array
-// that needs them (connectivity, each attribute, angles, areas) rather than
-// copied into memory, which would cost the most at the moment memory use
-// peaks.
+// the head names), last array first (see write_vtu).  The triangles are read from the mesh once per
+// array that needs them (connectivity, each attribute, angles, areas) rather than copied into
+// memory, which would cost the most at the moment memory use peaks.
 //
 // VTK numbers points from 0 whatever the run's base.  Six-node triangles
 // are VTK_QUADRATIC_TRIANGLE, whose midpoints come in the order (0,1),
@@ -83,16 +82,17 @@ void append_connectivity(File& file, const MeshExport& mesh) {
     out.flush();
 }
 
-// A value per triangle: f(corners, attributes).
+// A value of type T per triangle: f(corners, attributes).
+template <class T>
 void append_per_triangle(File& file, const MeshExport& mesh,
                          const std::function<double(const std::uint32_t*, const double*)>& f) {
     EleSource source = mesh.triangles();
     std::vector<double> attributes(source.attribute_count);
     std::uint32_t c[6];
-    Appender<double> out(file);
+    Appender<T> out(file);
     for (std::size_t t = 0; t < source.count; ++t) {
         source.next(c, attributes.data());
-        out.push(f(c, attributes.data()));
+        out.push(static_cast<T>(f(c, attributes.data())));
     }
     out.flush();
 }
@@ -122,26 +122,30 @@ std::vector<Array> arrays_of(const MeshExport& mesh, const WriteFormat& format) 
     for (std::uint32_t a = 0; a < mesh.attribute_count; ++a)
         arrays.push_back({S::cell_data, fmt::format("region_attribute_{}", a), "Float64", 1, 8 * m,
                           [&mesh, a](File& f) {
-                              append_per_triangle(
+                              append_per_triangle<double>(
                                   f, mesh, [a](const std::uint32_t*, const double* attributes) {
                                       return attributes[a];
                                   });
                           }});
+    // The angles and areas are derived, for looking at the mesh rather than
+    // for computing with: single precision (7 digits) makes the file a
+    // sixth smaller.
     const double* xy = nodes.xy.data();
-    arrays.push_back({S::cell_data, "min_angle", "Float64", 1, 8 * m, [&mesh, xy](File& f) {
-                          append_per_triangle(f, mesh, [xy](const std::uint32_t* c, const double*) {
-                              return smallest_angle_degrees(xy + 2 * std::size_t{c[0]},
-                                                            xy + 2 * std::size_t{c[1]},
-                                                            xy + 2 * std::size_t{c[2]});
-                          });
+    arrays.push_back({S::cell_data, "min_angle", "Float32", 1, 4 * m, [&mesh, xy](File& f) {
+                          append_per_triangle<float>(
+                              f, mesh, [xy](const std::uint32_t* c, const double*) {
+                                  return smallest_angle_degrees(xy + 2 * std::size_t{c[0]},
+                                                                xy + 2 * std::size_t{c[1]},
+                                                                xy + 2 * std::size_t{c[2]});
+                              });
                       }});
-    arrays.push_back({S::cell_data, "area", "Float64", 1, 8 * m, [&mesh, xy](File& f) {
-                          append_per_triangle(f, mesh, [xy](const std::uint32_t* c, const double*) {
-                              return triangle_area(xy + 2 * std::size_t{c[0]},
-                                                   xy + 2 * std::size_t{c[1]},
-                                                   xy + 2 * std::size_t{c[2]});
-                          });
-                      }});
+    arrays.push_back(
+        {S::cell_data, "area", "Float32", 1, 4 * m, [&mesh, xy](File& f) {
+             append_per_triangle<float>(f, mesh, [xy](const std::uint32_t* c, const double*) {
+                 return triangle_area(xy + 2 * std::size_t{c[0]}, xy + 2 * std::size_t{c[1]},
+                                      xy + 2 * std::size_t{c[2]});
+             });
+         }});
 
     arrays.push_back({S::points, "Points", "Float64", 3, 24 * n, [&nodes](File& f) {
                           Appender<double> out(f);
@@ -211,7 +215,19 @@ void write_vtu(OutputTransaction& tx, const std::string& path, const MeshExport&
                    std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian",
                    nodes.size(), mesh.triangle_count);
     static constexpr const char* section_tag[] = {"PointData", "CellData", "Points", "Cells"};
-    std::uint64_t offset = 0;
+    // The appended section holds the arrays in the reverse of the head's
+    // order.  Any order is valid VTK; this one is also read correctly by
+    // meshio, which turns the raw data into base64 array by array, in the
+    // order of the data, and finds each array's element by its old offset
+    // among elements whose offsets it has already replaced with new ones:
+    // with the head in reverse order, the element looked for always comes
+    // before any such element that happens to hold the same number.
+    std::vector<std::uint64_t> offsets(arrays.size());
+    std::uint64_t end = 0;
+    for (std::size_t i = arrays.size(); i-- > 0;) {
+        offsets[i] = end;
+        end += sizeof(std::uint64_t) + arrays[i].bytes;
+    }
     for (std::size_t i = 0; i < arrays.size(); ++i) {
         const Array& a = arrays[i];
         const auto s = static_cast<std::size_t>(a.section);
@@ -224,8 +240,7 @@ void write_vtu(OutputTransaction& tx, const std::string& path, const MeshExport&
         fmt::format_to(out,
                        "        <DataArray type=\"{}\" Name=\"{}\"{} format=\"appended\" "
                        "offset=\"{}\"/>\n",
-                       a.type, a.name, components, offset);
-        offset += sizeof(std::uint64_t) + a.bytes;
+                       a.type, a.name, components, offsets[i]);
         if (i + 1 == arrays.size() || arrays[i + 1].section != a.section)
             fmt::format_to(out, "      </{}>\n", section_tag[s]);
     }
@@ -234,10 +249,10 @@ void write_vtu(OutputTransaction& tx, const std::string& path, const MeshExport&
                    "  </UnstructuredGrid>\n"
                    "  <AppendedData encoding=\"raw\">\n"
                    "_");
-    for (const Array& a : arrays) {
-        const std::uint64_t bytes = a.bytes;
+    for (std::size_t i = arrays.size(); i-- > 0;) {
+        const std::uint64_t bytes = arrays[i].bytes;
         file.append(&bytes, sizeof bytes);
-        a.append(file);
+        arrays[i].append(file);
     }
     fmt::format_to(std::back_inserter(file.buffer()),
                    "\n"

@@ -41,7 +41,8 @@ double triangle_area(const double* a, const double* b, const double* c) noexcept
 // VTK XML UnstructuredGrid, little-endian raw binary appended data: points
 // (z = 0), triangles (VTK_TRIANGLE, or VTK_QUADRATIC_TRIANGLE with six
 // nodes), point data "boundary_marker" and "attribute_<i>", cell data
-// "region_attribute_<i>", "min_angle" (degrees) and "area".
+// "region_attribute_<i>", "min_angle" (degrees) and "area" (these two in
+// single precision).
 void write_vtu(OutputTransaction& out, const std::string& path, const MeshExport& mesh,
                const WriteFormat& format);
 

@@ -32,7 +32,8 @@ std::uint32_t crc32(const char* data, std::size_t size) {
 }
 
 void put_be32(std::string& out, std::uint32_t v) {
-    for (int shift = 24; shift >= 0; shift -= 8) out.push_back(static_cast<char>((v >> shift) & 0xff));
+    for (int shift = 24; shift >= 0; shift -= 8)
+        out.push_back(static_cast<char>((v >> shift) & 0xff));
 }
 
 void put_chunk(std::string& out, const char* type, const std::string& data) {
@@ -52,7 +53,8 @@ std::string indexed_png(std::uint32_t width, std::uint32_t height,
     std::string header;
     put_be32(header, width);
     put_be32(header, height);
-    header += std::string("\x08\x03\x00\x00\x00", 5);  // 8 bits, palette, deflate, filter 0, no interlace
+    header +=
+        std::string("\x08\x03\x00\x00\x00", 5);  // 8 bits, palette, deflate, filter 0, no interlace
     put_chunk(png, "IHDR", header);
     std::string colours;
     for (const auto& c : palette) colours.append(reinterpret_cast<const char*>(c.data()), 3);

@@ -92,15 +92,16 @@ Frame frame_of(const NodeSet& nodes) {
 // A colour scale from dark violet through blue and green to yellow, in the
 // manner of the perceptually even scales of plotting programs.
 Colour ramp(double t) {
-    static constexpr std::array<Colour, 5> stops = {
-        Colour{68, 1, 84}, Colour{59, 82, 139}, Colour{33, 145, 140}, Colour{94, 201, 98},
-        Colour{253, 231, 37}};
+    static constexpr std::array<Colour, 5> stops = {Colour{68, 1, 84}, Colour{59, 82, 139},
+                                                    Colour{33, 145, 140}, Colour{94, 201, 98},
+                                                    Colour{253, 231, 37}};
     t = std::clamp(t, 0.0, 1.0) * (stops.size() - 1);
     const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(t), stops.size() - 2);
     const double f = t - static_cast<double>(i);
     Colour c;
     for (int k = 0; k < 3; ++k)
-        c[k] = static_cast<std::uint8_t>(std::lround(stops[i][k] + f * (stops[i + 1][k] - stops[i][k])));
+        c[k] = static_cast<std::uint8_t>(
+            std::lround(stops[i][k] + f * (stops[i + 1][k] - stops[i][k])));
     return c;
 }
 
@@ -119,7 +120,7 @@ std::string hex(const Colour& c) { return fmt::format("#{:02x}{:02x}{:02x}", c[0
 // angle opposite each triangle's shortest and longest edge (no
 // trigonometry per triangle): the smallest angle has the largest cotangent.
 struct AngleRange {
-    double largest_cot = -std::numeric_limits<double>::infinity();   // of smallest angles
+    double largest_cot = -std::numeric_limits<double>::infinity();  // of smallest angles
     double smallest_cot = std::numeric_limits<double>::infinity();  // of largest angles
     void add(const double* a, const double* b, const double* c) {
         const double* p[3] = {a, b, c};
@@ -129,8 +130,10 @@ struct AngleRange {
             const double* v = p[(k + 2) % 3];
             len[k] = (u[0] - v[0]) * (u[0] - v[0]) + (u[1] - v[1]) * (u[1] - v[1]);
         }
-        const int shortest = len[0] <= len[1] ? (len[0] <= len[2] ? 0 : 2) : (len[1] <= len[2] ? 1 : 2);
-        const int longest = len[0] >= len[1] ? (len[0] >= len[2] ? 0 : 2) : (len[1] >= len[2] ? 1 : 2);
+        const int shortest =
+            len[0] <= len[1] ? (len[0] <= len[2] ? 0 : 2) : (len[1] <= len[2] ? 1 : 2);
+        const int longest =
+            len[0] >= len[1] ? (len[0] >= len[2] ? 0 : 2) : (len[1] >= len[2] ? 1 : 2);
         largest_cot = std::max(largest_cot, cot(p, shortest));
         smallest_cot = std::min(smallest_cot, cot(p, longest));
     }
@@ -146,7 +149,9 @@ struct AngleRange {
     bool empty() const { return largest_cot == -std::numeric_limits<double>::infinity(); }
 };
 
-const double* corner(const NodeSet& nodes, std::uint32_t v) { return nodes.xy.data() + 2 * std::size_t{v}; }
+const double* corner(const NodeSet& nodes, std::uint32_t v) {
+    return nodes.xy.data() + 2 * std::size_t{v};
+}
 
 // The segments as chains: maximal paths through vertices that join exactly
 // two segments (closed loops included), each a list of vertices.
@@ -208,10 +213,11 @@ void put_header(Out out, double width, double height) {
 // The legend's first lines: counts and angles.
 void put_counts(Out out, const MeshExport& mesh, std::size_t segments, const AngleRange& angles,
                 double top) {
-    fmt::format_to(out,
-                   "<g id=\"legend\" font-family=\"sans-serif\" font-size=\"13\" fill=\"#000000\">\n"
-                   "<text x=\"{}\" y=\"{}\">{} triangles, {} vertices, {} segments</text>\n",
-                   margin, top + 14, mesh.triangle_count, mesh.nodes->size(), segments);
+    fmt::format_to(
+        out,
+        "<g id=\"legend\" font-family=\"sans-serif\" font-size=\"13\" fill=\"#000000\">\n"
+        "<text x=\"{}\" y=\"{}\">{} triangles, {} vertices, {} segments</text>\n",
+        margin, top + 14, mesh.triangle_count, mesh.nodes->size(), segments);
     if (!angles.empty())
         fmt::format_to(out,
                        "<text x=\"{}\" y=\"{}\">angles from {:.2f}\u00b0 to {:.2f}\u00b0</text>\n",
@@ -259,8 +265,8 @@ void put_segments(File& file, const Frame& frame, const NodeSet& nodes, const Se
                 const double x = frame.x(p[0]), y = frame.y(p[1]);
                 if (i > 0 && i + 1 < chain.size() && std::hypot(x - last_x, y - last_y) < keep)
                     continue;
-                fmt::format_to(out, FMT_COMPILE("{}{:.1f} {:.1f}"),
-                               i == 0 ? "<path d=\"M" : "L", x, y);
+                fmt::format_to(out, FMT_COMPILE("{}{:.1f} {:.1f}"), i == 0 ? "<path d=\"M" : "L", x,
+                               y);
                 last_x = x;
                 last_y = y;
             }
@@ -343,7 +349,9 @@ std::pair<double, double> draw_density(File& file, const Frame& frame, const Mes
     const NodeSet& nodes = *mesh.nodes;
     const auto w = static_cast<std::uint32_t>(frame.width);
     const auto h = static_cast<std::uint32_t>(frame.height);
-    std::vector<double> received(std::size_t{w} * h, 0.0), covered(std::size_t{w} * h, 0.0);
+    // What each pixel received and the area it was covered by, side by side
+    // (one cache line for both: the pass is bound by memory, not arithmetic).
+    std::vector<std::array<double, 2>> sums(std::size_t{w} * h, {0.0, 0.0});
     // The pixels the mesh touches: drawn, the others left blank.
     std::vector<std::uint8_t> drawn(std::size_t{w} * h, 0);
     const auto pixel = [w, h](double x, double y) {
@@ -353,59 +361,92 @@ std::pair<double, double> draw_density(File& file, const Frame& frame, const Mes
     };
     EleSource source = mesh.triangles();
     std::vector<double> attributes(source.attribute_count);
+    // The pass waits on memory: a triangle's corners are anywhere in the
+    // vertex array, and its pixel anywhere in the image.  So the triangles
+    // come in batches: the corners of a whole batch are fetched ahead
+    // (prefetch), then its centroid pixels, then each triangle is drawn, in
+    // order as before.
+    constexpr std::size_t batch = 256;
+    std::vector<std::uint32_t> corners(3 * batch);
+    std::vector<double> xs(3 * batch), ys(3 * batch);
+    std::vector<std::size_t> centroid_at(batch);
     std::uint32_t c[6];
-    for (std::size_t t = 0; t < source.count; ++t) {
-        source.next(c, attributes.data());
-        const double* p[3] = {corner(nodes, c[0]), corner(nodes, c[1]), corner(nodes, c[2])};
-        angles.add(p[0], p[1], p[2]);
-        double x[3], y[3];
-        for (int k = 0; k < 3; ++k) {
-            x[k] = frame.x(p[k][0]) - margin;
-            y[k] = frame.y(p[k][1]) - margin;
+    for (std::size_t first = 0; first < source.count; first += batch) {
+        const std::size_t n = std::min(batch, source.count - first);
+        for (std::size_t b = 0; b < n; ++b) {
+            source.next(c, attributes.data());
+            std::copy_n(c, 3, &corners[3 * b]);
+            for (int k = 0; k < 3; ++k) __builtin_prefetch(corner(nodes, c[k]));
         }
-        // Twice the signed area in pixels; negative as y points down.
-        const double twice = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
-        const double area = std::abs(twice) / 2;
-        const double lo_x = std::max(0.0, std::floor(std::min({x[0], x[1], x[2]}) - 0.5));
-        const double hi_x = std::min(w - 1.0, std::ceil(std::max({x[0], x[1], x[2]}) - 0.5));
-        const double lo_y = std::max(0.0, std::floor(std::min({y[0], y[1], y[2]}) - 0.5));
-        const double hi_y = std::min(h - 1.0, std::ceil(std::max({y[0], y[1], y[2]}) - 0.5));
-        // A triangle of a pixel or more spreads over the pixel centres it
-        // covers; a smaller one goes to its centroid's pixel whole (spread,
-        // it would weigh too much on one centre), and the centres it
-        // covers are only marked as drawn.
-        const bool spread = area >= 1;
-        bool hit = false;
-        if (twice != 0) {
-            const double sign = twice > 0 ? 1 : -1;
-            for (double j = lo_y; j <= hi_y; ++j) {
-                for (double i = lo_x; i <= hi_x; ++i) {
-                    const double px = i + 0.5, py = j + 0.5;
-                    bool inside = true;
-                    for (int k = 0; k < 3 && inside; ++k) {
-                        const int k1 = (k + 1) % 3;
-                        const double e = (x[k1] - x[k]) * (py - y[k]) - (y[k1] - y[k]) * (px - x[k]);
-                        inside = sign * e >= 0;
+        for (std::size_t b = 0; b < n; ++b) {
+            const double* p[3] = {corner(nodes, corners[3 * b]), corner(nodes, corners[3 * b + 1]),
+                                  corner(nodes, corners[3 * b + 2])};
+            angles.add(p[0], p[1], p[2]);
+            for (int k = 0; k < 3; ++k) {
+                xs[3 * b + k] = frame.x(p[k][0]) - margin;
+                ys[3 * b + k] = frame.y(p[k][1]) - margin;
+            }
+            centroid_at[b] = pixel((xs[3 * b] + xs[3 * b + 1] + xs[3 * b + 2]) / 3,
+                                   (ys[3 * b] + ys[3 * b + 1] + ys[3 * b + 2]) / 3);
+            __builtin_prefetch(&sums[centroid_at[b]], 1);
+        }
+        for (std::size_t b = 0; b < n; ++b) {
+            const double* x = &xs[3 * b];
+            const double* y = &ys[3 * b];
+            // Twice the signed area in pixels; negative as y points down.
+            const double twice = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
+            const double area = std::abs(twice) / 2;
+            // The pixels whose centres (i + 0.5, j + 0.5) lie in the bounding
+            // box: none, mostly, for a triangle smaller than a pixel.
+            const double lo_x = std::max(0.0, std::ceil(std::min({x[0], x[1], x[2]}) - 0.5));
+            const double hi_x = std::min(w - 1.0, std::floor(std::max({x[0], x[1], x[2]}) - 0.5));
+            const double lo_y = std::max(0.0, std::ceil(std::min({y[0], y[1], y[2]}) - 0.5));
+            const double hi_y = std::min(h - 1.0, std::floor(std::max({y[0], y[1], y[2]}) - 0.5));
+            // A triangle of a pixel or more spreads over the pixel centres it
+            // covers; a smaller one goes to its centroid's pixel whole (spread,
+            // it would weigh too much on one centre), and the centres it
+            // covers are only marked as drawn.
+            const bool spread = area >= 1;
+            bool hit = false;
+            if (twice != 0) {
+                const double sign = twice > 0 ? 1 : -1;
+                for (double j = lo_y; j <= hi_y; ++j) {
+                    for (double i = lo_x; i <= hi_x; ++i) {
+                        const double px = i + 0.5, py = j + 0.5;
+                        bool inside = true;
+                        for (int k = 0; k < 3 && inside; ++k) {
+                            const int k1 = (k + 1) % 3;
+                            const double e =
+                                (x[k1] - x[k]) * (py - y[k]) - (y[k1] - y[k]) * (px - x[k]);
+                            inside = sign * e >= 0;
+                        }
+                        if (!inside) continue;
+                        const std::size_t at =
+                            static_cast<std::size_t>(j) * w + static_cast<std::size_t>(i);
+                        drawn[at] = 1;
+                        if (!spread) continue;
+                        sums[at][0] += 1 / area;
+                        sums[at][1] += 1;
+                        hit = true;
                     }
-                    if (!inside) continue;
-                    const std::size_t at = static_cast<std::size_t>(j) * w + static_cast<std::size_t>(i);
-                    drawn[at] = 1;
-                    if (!spread) continue;
-                    received[at] += 1 / area;
-                    covered[at] += 1;
-                    hit = true;
                 }
             }
-        }
-        if (!hit) {
-            const std::size_t at = pixel((x[0] + x[1] + x[2]) / 3, (y[0] + y[1] + y[2]) / 3);
-            received[at] += 1;
-            covered[at] += area;
-            drawn[at] = 1;
+            if (!hit) {
+                const std::size_t at = centroid_at[b];
+                sums[at][0] += 1;
+                sums[at][1] += area;
+                drawn[at] = 1;
+            }
         }
     }
     // One triangle per pixel is noise: the density shown is that of the
     // square of (2 smoothing + 1) pixels around each (both sums over it).
+    std::vector<double> received(sums.size()), covered(sums.size());
+    for (std::size_t i = 0; i < sums.size(); ++i) {
+        received[i] = sums[i][0];
+        covered[i] = sums[i][1];
+    }
+    sums = {};
     box_sum(received, w, h);
     box_sum(covered, w, h);
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;

@@ -67,32 +67,19 @@ done
 rm -f "$dir"/pipe.2.*
 
 # The progress line's cost: the same graded run with standard error on a
-# terminal and in a file, both started the same way (python3's pty module
+# terminal and in a file, both started the same way (scripts/on-terminal.py
 # gives each a terminal; one then sends standard error to a file), timed
-# from the fork to the exit.
+# from the start to the exit.
 echo
 # Not -Q, which turns the line off: both runs print the same (-V on standard
 # output), only standard error differs.
 graded=("$GPDR" -Vpq20j"$threads" -NEP --unsuitable "$lib" pipe.poly)
-timed_run() {  # STDERR (terminal or a file name) COMMAND...: prints the wall seconds
-  (cd "$dir" && python3 -c '
-import os, pty, sys, time
-start = time.monotonic()
-pid, fd = pty.fork()
-if pid == 0:
-    if sys.argv[1] != "terminal":
-        err = os.open(sys.argv[1], os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o644)
-        os.dup2(err, 2)
-    os.execv(sys.argv[2], sys.argv[2:])
-while True:
-    try:
-        if not os.read(fd, 65536):
-            break
-    except OSError:
-        break
-_, status = os.waitpid(pid, 0)
-print(f"{time.monotonic() - start:.3f}")
-sys.exit(os.waitstatus_to_exitcode(status))' "$@")
+timed_run() {  # STDERR (terminal, or a file name) COMMAND...: prints the wall seconds
+  local where=$1
+  shift
+  local redirect=()
+  [ "$where" = terminal ] || redirect=(--stderr "$where")
+  (cd "$dir" && python3 "$root/scripts/on-terminal.py" --time "${redirect[@]}" "$@" 2>&1 >/dev/null)
 }
 terminal="" file=""
 for round in $(seq "$rounds"); do

@@ -55,6 +55,10 @@ std::string progress_text(const Progress::Snapshot& s, double stage_seconds,
             return fmt::format("gpdr: refining, about {} triangles ({} a second), {}",
                                count(triangles), count(rate), time);
         }
+        case Progress::Stage::preparing:
+            if (s.vertices == 0) return fmt::format("gpdr: preparing the output, {}", time);
+            return fmt::format("gpdr: preparing the output, about {} triangles, {}",
+                               count(2.0 * double(s.vertices)), time);
         case Progress::Stage::writing:
             if (s.files_total == 0) return fmt::format("gpdr: writing, {}", time);
             return fmt::format("gpdr: writing, {} of {} files done, {}", s.files_done,

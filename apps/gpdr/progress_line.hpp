@@ -2,7 +2,8 @@
 // The progress line gpdr shows on a terminal during a long run: one line on
 // standard error, rewritten in place a few times a second with what the run
 // is doing (reading, triangulating, refining with the triangles so far and
-// their rate, writing with the files done), and erased when the run ends.
+// their rate, preparing the output, writing with the files done), and
+// erased when the run ends.
 // Only a terminal gets it (never a pipe or a log file), never with -Q, and
 // only once the run has taken about a second, so short runs print nothing
 // more than before.

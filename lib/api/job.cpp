@@ -168,6 +168,7 @@ Meshed make_mesh(const Options& options, api::Input& input, const WarningSink& w
         m.refined.new_vertices = {};
     }
     result.refine_seconds = clock.lap();
+    if (progress != nullptr) progress->enter(Progress::Stage::preparing);
 
     if (options.check) {
         result.checked = true;

@@ -88,6 +88,9 @@ TEST_CASE("a long run on a terminal shows a progress line and erases it", "[cli]
     const std::size_t shown = r.terminal.rfind("\rgpdr: ");
     REQUIRE(shown != std::string::npos);
     CHECK(r.terminal.find("\rgpdr: refining, about ") != std::string::npos);
+    // Refining shows the mesh growing: not the count of zero it would show
+    // if the vertex count were read from nowhere.
+    CHECK(r.terminal.find("\rgpdr: refining, about 0 triangles") == std::string::npos);
     // Erased (carriage return, erase to the end of the line) after the last
     // update, before the results are printed.
     const std::size_t erased = r.terminal.rfind("\r\x1b[K");

@@ -14,12 +14,24 @@ namespace gpdr {
 
 class Progress {
 public:
-    enum class Stage : int { starting, reading, triangulating, refining, writing, finished };
+    // preparing: between the finished mesh and the first file (-C's check,
+    // the arrays, -V's statistics).
+    enum class Stage : int {
+        starting,
+        reading,
+        triangulating,
+        refining,
+        preparing,
+        writing,
+        finished
+    };
 
     struct Snapshot {
         Stage stage = Stage::starting;
         std::uint64_t input_vertices = 0;  // known once reading is done
-        std::uint64_t vertices = 0;        // while refining: the mesh's vertices so far
+        // The mesh's vertices so far while refining, and as refinement left
+        // them afterwards (0 when there was none).
+        std::uint64_t vertices = 0;
         std::uint64_t files_done = 0, files_total = 0;  // while writing
     };
 
@@ -31,7 +43,7 @@ public:
         s.files_done = files_done_.load(std::memory_order_relaxed);
         s.files_total = files_total_.load(std::memory_order_relaxed);
         const std::lock_guard lock(watch_mutex_);
-        if (watched_) s.vertices = watched_();
+        s.vertices = watched_ ? watched_() : last_count_;
         return s;
     }
 
@@ -56,6 +68,7 @@ public:
     }
     void unwatch() noexcept {
         const std::lock_guard lock(watch_mutex_);
+        if (watched_) last_count_ = watched_();
         watched_ = nullptr;
     }
 
@@ -65,6 +78,7 @@ private:
     std::atomic<std::uint64_t> files_done_{0}, files_total_{0};
     mutable std::mutex watch_mutex_;
     std::function<std::uint64_t()> watched_;
+    std::uint64_t last_count_ = 0;  // what watched_ said last, once unwatched
 };
 
 }  // namespace gpdr

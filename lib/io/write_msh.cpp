@@ -9,7 +9,8 @@
 //     A region's physical tag is its attribute when every region's is a
 //     whole number from 1 up, otherwise the regions are numbered 1, 2, ...
 //     in increasing order of attribute;
-//   - the segments are 2-node lines, one curve per boundary marker, each
+//   - the segments are lines (3-node with six-node triangles, the middle
+//     node last, as gmsh orders them), one curve per boundary marker, each
 //     with a physical group named "boundary marker <m>" whose tag is the
 //     marker when it is positive (gmsh's tags are), otherwise numbers after
 //     the largest marker; without markers (-B) one curve, "segments".
@@ -27,6 +28,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include <fmt/compile.h>
@@ -104,6 +106,35 @@ std::map<int, Group> curves_of(const SegmentSet& segments, bool markers) {
     return curves;
 }
 
+// With six-node triangles, each segment's midpoint node: the node the
+// triangle on the segment has opposite the corner facing it (one pass over
+// the triangles).  A segment no triangle has (none, in a mesh gpdr made)
+// would be an error.
+std::vector<std::uint32_t> segment_midpoints(const MeshExport& mesh, const SegmentSet& segments) {
+    constexpr std::uint32_t none = 0xffffffffu;
+    const auto key = [](std::uint32_t a, std::uint32_t b) {
+        return a < b ? std::uint64_t{a} << 32 | b : std::uint64_t{b} << 32 | a;
+    };
+    std::unordered_map<std::uint64_t, std::size_t> index;
+    index.reserve(segments.size());
+    for (std::size_t s = 0; s < segments.size(); ++s)
+        index.emplace(key(segments.endpoints[2 * s], segments.endpoints[2 * s + 1]), s);
+    std::vector<std::uint32_t> middle(segments.size(), none);
+    EleSource source = mesh.triangles();
+    std::vector<double> attributes(source.attribute_count);
+    std::uint32_t c[6];
+    for (std::size_t t = 0; t < source.count; ++t) {
+        source.next(c, attributes.data());
+        for (int k = 0; k < 3; ++k) {
+            const auto found = index.find(key(c[(k + 1) % 3], c[(k + 2) % 3]));
+            if (found != index.end()) middle[found->second] = c[3 + k];
+        }
+    }
+    for (const std::uint32_t m : middle)
+        if (m == none) throw InternalError("a segment of the mesh is no triangle's edge");
+    return middle;
+}
+
 void put_node_data(File& file, const std::string& name, std::size_t n,
                    const std::function<void(Out, std::size_t)>& value) {
     Out out(file.buffer());
@@ -172,15 +203,19 @@ void write_msh(OutputTransaction& tx, const std::string& path, const MeshExport&
     fmt::format_to(out, "$EndNodes\n");
 
     const std::size_t lines = segments.size();
+    const std::vector<std::uint32_t> middle =
+        nc == 6 ? segment_midpoints(mesh, segments) : std::vector<std::uint32_t>{};
     fmt::format_to(out, "$Elements\n{} {} 1 {}\n", curves.size() + regions.size(), m + lines,
                    m + lines);
     for (const auto& [marker, curve] : curves) {
-        fmt::format_to(out, "1 {} 1 {}\n", curve.entity, curve.count);
+        fmt::format_to(out, "1 {} {} {}\n", curve.entity, nc == 6 ? 8 : 1, curve.count);
         for (std::size_t s = 0; s < lines; ++s) {
             if ((markers ? segments.markers[s] : 0) != marker) continue;
-            fmt::format_to(out, FMT_COMPILE("{} {} {}\n"), m + s + 1,
+            fmt::format_to(out, FMT_COMPILE("{} {} {}"), m + s + 1,
                            std::uint64_t{segments.endpoints[2 * s]} + 1,
                            std::uint64_t{segments.endpoints[2 * s + 1]} + 1);
+            if (nc == 6) fmt::format_to(out, FMT_COMPILE(" {}"), std::uint64_t{middle[s]} + 1);
+            buf.push_back('\n');
             file.flush_if_full();
         }
     }

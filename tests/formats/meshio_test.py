@@ -191,10 +191,15 @@ class MeshioReadsGpdr(unittest.TestCase):
                     for row in block.data:
                         found.append((tuple(int(x) for x in row), name))
                 else:
-                    self.assertEqual(block.type, "line")
+                    self.assertEqual(block.type, "line3" if six else "line")
                     name = names[(1, int(physical[0]))]
                     for row in block.data:
-                        lines.append((tuple(sorted(int(x) for x in row)), name))
+                        if six:
+                            # The midpoint node, last, is the segment's midpoint.
+                            np.testing.assert_allclose(
+                                xy[row[2]], (xy[row[0]] + xy[row[1]]) / 2, rtol=0, atol=1e-12
+                            )
+                        lines.append((tuple(sorted(int(x) for x in row[:2])), name))
             ordered = corners[:, SIX_NODE_ORDER] if six else corners
             if tattr.shape[1] > 0:
                 expected = [(tuple(int(x) for x in r), f"region {a:g}") for r, a in zip(ordered, tattr[:, 0])]

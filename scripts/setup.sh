@@ -11,9 +11,10 @@ cd "$(dirname "$0")/.."
 
 # pkg-config and locales (localedef's sources): the library's tests.
 # clang and its runtimes (libFuzzer, the sanitizers): the shared sanitizer
-# build with the fuzz targets (scripts/asan-build.sh).
+# build with the fuzz targets (scripts/asan-build.sh).  python3-meshio (with
+# python3-numpy): the test that other programs read the .vtu and .msh files.
 packages=(cmake make gcc g++ libcli11-dev libfmt-dev catch2 libgmp-dev pkg-config locales clang
-  libclang-rt-14-dev)
+  libclang-rt-14-dev python3-meshio python3-numpy)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

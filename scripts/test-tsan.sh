@@ -31,5 +31,12 @@ run "$build/gpdr" -Vpq30a0.02cenvj4 "$scratch/flow.poly" >/dev/null
 cp "$root/tests/data/letter.poly" "$scratch/"
 run "$build/gpdr" -Qpq30a0.001j4 "$scratch/letter.poly"
 echo "gpdr -j4 under ThreadSanitizer: no race reported"
+# On a terminal: the progress line's thread reads the refining mesh's vertex
+# count and the files written, while four threads refine and then write
+# the files for other programs side by side (what the terminal shows is
+# printed: a race report would be on it).
+run python3 "$root/scripts/on-terminal.py" --show "$build/gpdr" -pq30a0.02cj4 --vtk --gmsh --svg \
+    "$scratch/flow.poly"
+echo "gpdr -j4 on a terminal (progress line) under ThreadSanitizer: no race reported"
 run "$build/tests/capi_threads_test" >/dev/null
 echo "libtriangle from 8 threads under ThreadSanitizer: no race reported"

@@ -80,6 +80,9 @@ public:
             },
             "shared object providing triunsuitable()");
         app_.add_flag_callback("--force", [&options] { options.force = true; });
+        app_.add_flag_callback("--vtk", [&options] { options.write_vtk = true; });
+        app_.add_flag_callback("--gmsh", [&options] { options.write_gmsh = true; });
+        app_.add_flag_callback("--svg", [&options] { options.write_svg = true; });
         app_.add_flag_callback("--help", [&action] { action = CommandLine::Action::help; });
         app_.add_flag_callback("--version", [&action] { action = CommandLine::Action::version; });
     }

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <exception>
 #include <new>
+#include <optional>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -17,6 +18,7 @@
 
 #include "command_line.hpp"
 #include "help_text.hpp"
+#include "progress_line.hpp"
 #include "report.hpp"
 #include "signals.hpp"
 #include "unsuitable.hpp"
@@ -43,8 +45,20 @@ int run(int argc, const char* const* argv) {
     // &triunsuitable is null unless the user linked one in; the weak
     // reference is taken here, in main's object (see unsuitable.hpp).
     const gpdr::app::LoadedPlugins loaded = gpdr::app::load_plugins(line.options, &triunsuitable);
+    // On a terminal, a line that says what a long run is doing; warnings
+    // erase it before they are printed.
+    gpdr::Progress progress;
+    std::optional<gpdr::app::ProgressLine> progress_line;
+    gpdr::WarningSink sink = gpdr::app::printing_sink(line.options, stderr);
+    if (gpdr::app::wants_progress_line(line.options, stderr)) {
+        progress_line.emplace(progress, stderr);
+        sink = [&progress_line, print = sink](const gpdr::Warning& w) {
+            progress_line->interrupt([&] { print(w); });
+        };
+    }
     const gpdr::JobResult result =
-        gpdr::run_job(line.options, gpdr::app::printing_sink(line.options, stderr), loaded.plugins);
+        gpdr::run_job(line.options, sink, loaded.plugins, progress_line ? &progress : nullptr);
+    progress_line.reset();  // erased before the results are printed
     return gpdr::app::report_result(line.options, result, stdout, stderr);
 }
 

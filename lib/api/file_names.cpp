@@ -107,6 +107,9 @@ FileNames file_names(const Options& options) {
     f.out_v_node = out + ".v.node";
     f.out_v_edge = out + ".v.edge";
     f.out_off = out + ".off";
+    f.out_vtu = out + ".vtu";
+    f.out_msh = out + ".msh";
+    f.out_svg = out + ".svg";
     return f;
 }
 

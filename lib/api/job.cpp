@@ -128,8 +128,10 @@ std::vector<std::string> check(const Options& options, int base,
 // triangles are always materialised with `materialise`, else only when an
 // output derives from them.  Takes the vertices out of `input`.
 Meshed make_mesh(const Options& options, api::Input& input, const WarningSink& warn,
-                 const JobPlugins& plugins, bool materialise, JobResult& result, Stopwatch& clock) {
+                 const JobPlugins& plugins, bool materialise, JobResult& result, Stopwatch& clock,
+                 Progress* progress = nullptr) {
     Meshed m;
+    if (progress != nullptr) progress->enter(Progress::Stage::triangulating);
     // -C compares the mesh with the input as read, not as the stages saw it.
     std::optional<mesh::InputGeometry> geometry;
     if (options.check) geometry = api::input_geometry(options, input);
@@ -155,10 +157,23 @@ Meshed make_mesh(const Options& options, api::Input& input, const WarningSink& w
             options,
             api::estimate_memory(options, tri.mesh, settings, input.nodes.data.attribute_count),
             api::memory_available());
+        if (progress != nullptr) {
+            progress->enter(Progress::Stage::refining);
+            // The vertex count is one atomic of the mesh: reading it from
+            // the program's thread costs the refining threads nothing.
+            progress->watch([&mesh = tri.mesh] { return std::uint64_t{mesh.vertex_end()}; });
+        }
+        struct Unwatch {
+            Progress* p;
+            ~Unwatch() {
+                if (p != nullptr) p->unwatch();
+            }
+        } unwatch{progress};
         m.parallel_lines = api::refine(tri.mesh, settings, options, m.refined);
         api::warn_after_refinement(m.refined, warn);
     }
     result.refine_seconds = clock.lap();
+    if (progress != nullptr) progress->enter(Progress::Stage::preparing);
 
     if (options.check) {
         result.checked = true;
@@ -207,7 +222,8 @@ void add_statistics(JobResult& result, const Options& options, const Meshed& m) 
 
 }  // namespace
 
-JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugins& plugins) {
+JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugins& plugins,
+                  Progress* progress) {
     Options options = given;
     apply_input_name(options);
     const FileNames names = file_names(options);
@@ -215,11 +231,13 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
     Stopwatch clock;
 
     // Read (every input is checked before anything else happens).
+    if (progress != nullptr) progress->enter(Progress::Stage::reading);
     api::Input input = api::read_input(options, names, warn);
     result.input_vertices = input.nodes.data.size();
+    if (progress != nullptr) progress->set_input_vertices(result.input_vertices);
     result.read_seconds = clock.lap();
 
-    Meshed m = make_mesh(options, input, warn, plugins, false, result, clock);
+    Meshed m = make_mesh(options, input, warn, plugins, false, result, clock, progress);
 
     api::OutputRequest request;
     request.options = &options;
@@ -227,12 +245,14 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
     request.base = input.nodes.base;
     request.poly = input.poly ? &*input.poly : nullptr;
     request.write_hull_poly = options.convex_hull;
+    request.progress = progress;
     request.stamp = api::run_stamp(options.command.empty() ? "gpdr" : options.command,
                                    input.content_hash, result.vertices, result.triangles);
     // A mesh -C found wrong is not written: no file is made or replaced.
     if (!result.checked || result.check_problems.empty())
         result.files_written = api::write_outputs(request, m.tri.mesh, m.arrays);
     result.write_seconds += clock.lap();
+    if (progress != nullptr) progress->enter(Progress::Stage::finished);
 
     add_statistics(result, options, m);
     return result;

@@ -15,6 +15,7 @@
 #include <gpdr/diagnostics.hpp>
 #include <gpdr/job.hpp>
 #include <gpdr/memory_job.hpp>
+#include <gpdr/progress.hpp>
 
 #include <gpdr/io.hpp>
 
@@ -129,6 +130,7 @@ struct OutputRequest {
     const PolyFile* poly = nullptr;  // the input PSLG (holes, regions), if any
     bool write_hull_poly = false;    // -c on a point set: .poly of the hull
     std::string stamp;               // the run stamp every file's last line carries
+    Progress* progress = nullptr;    // the writing stage and the files done, if given
 };
 
 // Writes every file the switches ask for, all or none (an output

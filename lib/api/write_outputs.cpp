@@ -13,6 +13,7 @@
 #include <vector>
 
 #include <gpdr/io.hpp>
+#include <gpdr/mesh_formats.hpp>
 
 #include "api/job_stages.hpp"
 #include "io/temporary_files.hpp"
@@ -34,7 +35,7 @@ struct FileJob {
 // were written.  A failure rethrows the first failing job's error (in job
 // order, whatever the timing), and the transactions' destructors remove
 // every temporary file.
-void write_all(const std::vector<FileJob>& jobs, unsigned threads) {
+void write_all(const std::vector<FileJob>& jobs, unsigned threads, Progress* progress) {
     const std::size_t n = jobs.size();
     const auto transactions = std::make_unique<io::OutputTransaction[]>(n);
     std::vector<std::exception_ptr> failures(n);
@@ -43,6 +44,7 @@ void write_all(const std::vector<FileJob>& jobs, unsigned threads) {
         for (std::size_t j; (j = next.fetch_add(1)) < n;) {
             try {
                 jobs[j].write(transactions[j]);
+                if (progress != nullptr) progress->file_done();
             } catch (...) {
                 failures[j] = std::current_exception();
             }
@@ -101,6 +103,7 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
                                        MeshArrays& arrays) {
     const Options& o = *request.options;
     const FileNames& names = *request.names;
+    if (request.progress != nullptr) request.progress->enter(Progress::Stage::writing);
     const io::WriteFormat format{request.base, !o.no_boundary_markers,
                                  o.command.empty() ? std::string("gpdr") : o.command,
                                  request.stamp};
@@ -111,6 +114,21 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
     const EdgeSet& edges = prepared.edges;
     const VoronoiDiagram& voronoi = prepared.voronoi;
     const std::uint64_t edge_count = prepared.edge_count;
+    const bool for_others = o.write_vtk || o.write_gmsh || o.write_svg;
+    const SegmentSet segments =
+        want_poly || o.write_gmsh || o.write_svg ? subsegments_of(mesh, prepared) : SegmentSet{};
+    // What the files for other programs read: the arrays, and the
+    // triangles once per pass they make (a fresh source each time).
+    io::MeshExport exported;
+    if (for_others) {
+        const io::EleSource first = triangle_source(arrays);
+        exported.nodes = &arrays.nodes;
+        exported.triangle_count = first.count;
+        exported.corners_per_triangle = first.corners_per_triangle;
+        exported.attribute_count = first.attribute_count;
+        exported.triangles = [&arrays] { return triangle_source(arrays); };
+        exported.segments = &segments;
+    }
 
     // Each job keeps what it needs by value or refers to data that stays
     // put until write_all returns; all of it is only read.
@@ -134,7 +152,7 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
             poly.nodes.attribute_count = arrays.nodes.attribute_count;
             // write_poly() takes the header's marker column from nodes.markers.
             if (arrays.nodes.has_markers()) poly.nodes.markers.assign(1, 0);
-            poly.segments = subsegments_of(mesh, prepared);
+            poly.segments = segments;
             if (request.poly) {
                 poly.holes = request.poly->holes;
                 poly.regions = request.poly->regions;
@@ -164,7 +182,20 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
         add(names.out_off, [&](io::OutputTransaction& out) {
             io::write_off(out, names.out_off, arrays.nodes, arrays.triangles, edge_count, format);
         });
-    write_all(jobs, parallel::thread_count(o.threads));
+    if (o.write_vtk)
+        add(names.out_vtu, [&](io::OutputTransaction& out) {
+            io::write_vtu(out, names.out_vtu, exported, format);
+        });
+    if (o.write_gmsh)
+        add(names.out_msh, [&](io::OutputTransaction& out) {
+            io::write_msh(out, names.out_msh, exported, format);
+        });
+    if (request.progress != nullptr) request.progress->set_files(jobs.size());
+    if (o.write_svg)
+        add(names.out_svg, [&](io::OutputTransaction& out) {
+            io::write_svg(out, names.out_svg, exported, format);
+        });
+    write_all(jobs, parallel::thread_count(o.threads), request.progress);
     std::vector<std::string> written;
     for (const FileJob& j : jobs) written.push_back(j.target);
     return written;

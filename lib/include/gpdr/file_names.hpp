@@ -42,10 +42,12 @@ struct FileNames {
     // What the run may read (which ones it does read depends on -p, -r, -a).
     std::string in_node, in_poly, in_ele, in_area;
 
-    // What the run may write (which ones depends on -e -v -n -g -N -E -P).
+    // What the run may write (which ones depends on -e -v -n -g -N -E -P,
+    // --vtk, --gmsh, --svg).
     // out_poly is empty with -I: Triangle never writes a .poly then, so as not
     // to replace the input .poly.
     std::string out_node, out_ele, out_poly, out_edge, out_neigh, out_v_node, out_v_edge, out_off;
+    std::string out_vtu, out_msh, out_svg;
 };
 
 // Every name for options.input under the given switches (the implied ones

@@ -10,6 +10,7 @@
 
 #include <gpdr/diagnostics.hpp>
 #include <gpdr/options.hpp>
+#include <gpdr/progress.hpp>
 
 namespace gpdr {
 
@@ -54,7 +55,9 @@ struct JobPlugins {
 };
 
 // Runs the whole job.  Throws gpdr::Error subclasses on bad input or output;
-// warnings go to `warn` (the caller silences them for -Q).
-JobResult run_job(const Options& options, const WarningSink& warn, const JobPlugins& plugins = {});
+// warnings go to `warn` (the caller silences them for -Q).  With `progress`,
+// the job records there what it is doing, for the caller to show.
+JobResult run_job(const Options& options, const WarningSink& warn, const JobPlugins& plugins = {},
+                  Progress* progress = nullptr);
 
 }  // namespace gpdr

@@ -62,6 +62,11 @@ struct Options {
     // --force: refine even when the mesh the area bounds call for is
     // estimated to need more memory than is available.
     bool force = false;
+    // Files for other programs (gpdr/mesh_formats.hpp): --vtk (.vtu),
+    // --gmsh (.msh), --svg (a picture of the mesh).
+    bool write_vtk = false;
+    bool write_gmsh = false;
+    bool write_svg = false;
 
     // The input name as given on the command line (last one wins).
     std::string input;

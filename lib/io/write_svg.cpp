@@ -1,0 +1,550 @@
+// The picture of a mesh (.svg), for a person rather than a program: what
+// Triangle's showme shows, in a file any browser opens.
+//
+// A mesh of up to vector_limit triangles is drawn triangle by triangle, one
+// <polygon> each, filled by the triangle's smallest angle (a fixed scale
+// from 0 to 60 degrees, so that pictures compare), or by region when the
+// triangles have attributes (-A) that tell two regions apart.  Holes and
+// the outside are left blank.  The segments are drawn over the triangles,
+// heavier, one <path> each.
+//
+// A larger mesh cannot be drawn edge by edge in a file of a few MB, and its
+// edges would be far below a pixel anyway.  It is shaded instead by its
+// local density, the triangles per unit area around each pixel, on a
+// logarithmic scale: where the mesh is graded, the grading shows.  Each
+// triangle of a pixel or more adds to the pixels whose centres it covers
+// (1 / its area in pixels each); a smaller one, or one that covers no
+// pixel centre, adds all of itself to the pixel of its centroid.  A pixel's
+// density is what the square of 7 x 7 pixels around it received over the
+// area they were covered by; pixels whose centre no triangle covers, nor
+// holds a centroid, are left blank.  The image is an embedded PNG (png_image.hpp);
+// the segments are drawn over it as polylines through chains of segments,
+// leaving out points closer than a fraction of a pixel to the last one
+// kept.
+//
+// Both end with a legend: the counts, the range of the mesh's angles, and
+// the colour scale.  Everything is computed in one pass over the triangles
+// in their order, on one thread, so the same mesh gives the same bytes.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <numbers>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <fmt/compile.h>
+#include <fmt/format.h>
+#include <gpdr/errors.hpp>
+#include <gpdr/mesh_formats.hpp>
+
+#include "io/output_file.hpp"
+#include "io/png_image.hpp"
+
+namespace gpdr::io {
+namespace {
+
+using File = OutputTransaction::File;
+using Out = std::back_insert_iterator<fmt::memory_buffer>;
+using Colour = std::array<std::uint8_t, 3>;
+
+constexpr std::size_t vector_limit = 20000;  // triangles drawn one by one, at most
+constexpr double drawing_size = 1000;        // the drawing's longer side, in pixels
+constexpr double margin = 12;
+constexpr double legend_height = 78;
+constexpr double legend_width = 460;  // the least picture width that fits the legend
+
+// Mesh coordinates -> picture coordinates (y down).
+struct Frame {
+    double min_x = 0, max_y = 0, scale = 1;
+    double width = 1, height = 1;  // of the drawing, in pixels
+    double x(double mx) const { return margin + (mx - min_x) * scale; }
+    double y(double my) const { return margin + (max_y - my) * scale; }
+};
+
+Frame frame_of(const NodeSet& nodes) {
+    double min_x = 0, max_x = 0, min_y = 0, max_y = 0;
+    for (std::size_t v = 0; v < nodes.size(); ++v) {
+        const double x = nodes.xy[2 * v], y = nodes.xy[2 * v + 1];
+        if (v == 0) {
+            min_x = max_x = x;
+            min_y = max_y = y;
+        }
+        min_x = std::min(min_x, x);
+        max_x = std::max(max_x, x);
+        min_y = std::min(min_y, y);
+        max_y = std::max(max_y, y);
+    }
+    Frame f;
+    f.min_x = min_x;
+    f.max_y = max_y;
+    const double longer = std::max(max_x - min_x, max_y - min_y);
+    f.scale = longer > 0 ? drawing_size / longer : 1;
+    f.width = std::max(1.0, std::ceil((max_x - min_x) * f.scale));
+    f.height = std::max(1.0, std::ceil((max_y - min_y) * f.scale));
+    return f;
+}
+
+// A colour scale from dark violet through blue and green to yellow, in the
+// manner of the perceptually even scales of plotting programs.
+Colour ramp(double t) {
+    static constexpr std::array<Colour, 5> stops = {Colour{68, 1, 84}, Colour{59, 82, 139},
+                                                    Colour{33, 145, 140}, Colour{94, 201, 98},
+                                                    Colour{253, 231, 37}};
+    t = std::clamp(t, 0.0, 1.0) * (stops.size() - 1);
+    const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(t), stops.size() - 2);
+    const double f = t - static_cast<double>(i);
+    Colour c;
+    for (int k = 0; k < 3; ++k)
+        c[k] = static_cast<std::uint8_t>(
+            std::lround(stops[i][k] + f * (stops[i + 1][k] - stops[i][k])));
+    return c;
+}
+
+// Regions: colours that are easy to tell apart.
+Colour region_colour(std::size_t rank) {
+    static constexpr std::array<Colour, 10> colours = {
+        Colour{141, 211, 199}, Colour{255, 255, 179}, Colour{190, 186, 218}, Colour{251, 128, 114},
+        Colour{128, 177, 211}, Colour{253, 180, 98},  Colour{179, 222, 105}, Colour{252, 205, 229},
+        Colour{217, 217, 217}, Colour{188, 128, 189}};
+    return colours[rank % colours.size()];
+}
+
+std::string hex(const Colour& c) { return fmt::format("#{:02x}{:02x}{:02x}", c[0], c[1], c[2]); }
+
+// The smallest and largest angle of the mesh, kept as cotangents of the
+// angle opposite each triangle's shortest and longest edge (no
+// trigonometry per triangle): the smallest angle has the largest cotangent.
+struct AngleRange {
+    double largest_cot = -std::numeric_limits<double>::infinity();  // of smallest angles
+    double smallest_cot = std::numeric_limits<double>::infinity();  // of largest angles
+    void add(const double* a, const double* b, const double* c) {
+        const double* p[3] = {a, b, c};
+        double len[3];
+        for (int k = 0; k < 3; ++k) {
+            const double* u = p[(k + 1) % 3];
+            const double* v = p[(k + 2) % 3];
+            len[k] = (u[0] - v[0]) * (u[0] - v[0]) + (u[1] - v[1]) * (u[1] - v[1]);
+        }
+        const int shortest =
+            len[0] <= len[1] ? (len[0] <= len[2] ? 0 : 2) : (len[1] <= len[2] ? 1 : 2);
+        const int longest =
+            len[0] >= len[1] ? (len[0] >= len[2] ? 0 : 2) : (len[1] >= len[2] ? 1 : 2);
+        largest_cot = std::max(largest_cot, cot(p, shortest));
+        smallest_cot = std::min(smallest_cot, cot(p, longest));
+    }
+    static double cot(const double* const* p, int k) {
+        const double* o = p[k];
+        const double* u = p[(k + 1) % 3];
+        const double* v = p[(k + 2) % 3];
+        const double ux = u[0] - o[0], uy = u[1] - o[1], vx = v[0] - o[0], vy = v[1] - o[1];
+        const double cross = std::abs(ux * vy - uy * vx);
+        return cross > 0 ? (ux * vx + uy * vy) / cross : 0;
+    }
+    static double degrees(double cot) { return std::atan2(1.0, cot) * 180 / std::numbers::pi; }
+    bool empty() const { return largest_cot == -std::numeric_limits<double>::infinity(); }
+};
+
+const double* corner(const NodeSet& nodes, std::uint32_t v) {
+    return nodes.xy.data() + 2 * std::size_t{v};
+}
+
+// The segments as chains: maximal paths through vertices that join exactly
+// two segments (closed loops included), each a list of vertices.
+std::vector<std::vector<std::uint32_t>> segment_chains(const SegmentSet& segments) {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> ends;  // (vertex, segment)
+    for (std::uint32_t s = 0; s < segments.size(); ++s) {
+        const std::uint32_t a = segments.endpoints[2 * s], b = segments.endpoints[2 * s + 1];
+        if (a == b) continue;
+        ends.emplace_back(a, s);
+        ends.emplace_back(b, s);
+    }
+    std::sort(ends.begin(), ends.end());
+    const auto at = [&ends](std::uint32_t v) {
+        const auto first = std::lower_bound(ends.begin(), ends.end(), std::make_pair(v, 0u));
+        auto last = first;
+        while (last != ends.end() && last->first == v) ++last;
+        return std::make_pair(first, last);
+    };
+    std::vector<bool> used(segments.size(), false);
+    std::vector<std::vector<std::uint32_t>> chains;
+    const auto walk = [&](std::uint32_t v, std::uint32_t s) {
+        std::vector<std::uint32_t> chain{v};
+        for (;;) {
+            used[s] = true;
+            const std::uint32_t a = segments.endpoints[2 * s];
+            const std::uint32_t w = a == v ? segments.endpoints[2 * s + 1] : a;
+            chain.push_back(w);
+            const auto [first, last] = at(w);
+            if (last - first != 2) break;
+            const std::uint32_t next = first->second == s ? (first + 1)->second : first->second;
+            if (used[next]) break;  // a loop, closed
+            v = w;
+            s = next;
+        }
+        chains.push_back(std::move(chain));
+    };
+    for (std::size_t i = 0; i < ends.size();) {
+        const auto [first, last] = at(ends[i].first);
+        if (last - first != 2)
+            for (auto e = first; e != last; ++e)
+                if (!used[e->second]) walk(e->first, e->second);
+        i = static_cast<std::size_t>(last - ends.begin());
+    }
+    for (const auto& [v, s] : ends)
+        if (!used[s]) walk(v, s);
+    return chains;
+}
+
+void put_header(Out out, double width, double height) {
+    fmt::format_to(out,
+                   "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                   "<svg xmlns=\"http://www.w3.org/2000/svg\" "
+                   "xmlns:xlink=\"http://www.w3.org/1999/xlink\" width=\"{0}\" height=\"{1}\" "
+                   "viewBox=\"0 0 {0} {1}\">\n"
+                   "<rect width=\"{0}\" height=\"{1}\" fill=\"#ffffff\"/>\n",
+                   width, height);
+}
+
+// The legend's first lines: counts and angles.
+void put_counts(Out out, const MeshExport& mesh, std::size_t segments, const AngleRange& angles,
+                double top) {
+    fmt::format_to(
+        out,
+        "<g id=\"legend\" font-family=\"sans-serif\" font-size=\"13\" fill=\"#000000\">\n"
+        "<text x=\"{}\" y=\"{}\">{} triangles, {} vertices, {} segments</text>\n",
+        margin, top + 14, mesh.triangle_count, mesh.nodes->size(), segments);
+    if (!angles.empty())
+        fmt::format_to(out,
+                       "<text x=\"{}\" y=\"{}\">angles from {:.2f}\u00b0 to {:.2f}\u00b0</text>\n",
+                       margin, top + 32, AngleRange::degrees(angles.largest_cot),
+                       AngleRange::degrees(angles.smallest_cot));
+}
+
+// A colour bar of the ramp with a caption and its two end labels.
+void put_ramp_bar(Out out, double top, const std::string& caption, const std::string& low,
+                  const std::string& high) {
+    fmt::format_to(out, "<defs><linearGradient id=\"scale\">");
+    for (int i = 0; i <= 8; ++i)
+        fmt::format_to(out, "<stop offset=\"{}\" stop-color=\"{}\"/>", i / 8.0, hex(ramp(i / 8.0)));
+    fmt::format_to(out,
+                   "</linearGradient></defs>\n"
+                   "<text x=\"{0}\" y=\"{1}\">{2}</text>\n"
+                   "<text x=\"{0}\" y=\"{3}\">{4}</text>\n"
+                   "<rect x=\"{5}\" y=\"{6}\" width=\"200\" height=\"12\" fill=\"url(#scale)\"/>\n"
+                   "<text x=\"{7}\" y=\"{3}\">{8}</text>\n",
+                   margin, top + 52, caption, top + 70, low, margin + 60, top + 60, margin + 266,
+                   high);
+}
+
+void put_segments(File& file, const Frame& frame, const NodeSet& nodes, const SegmentSet& segments,
+                  bool simplify) {
+    Out out(file.buffer());
+    fmt::format_to(out,
+                   "<g id=\"segments\" stroke=\"#000000\" stroke-width=\"{}\" "
+                   "stroke-linecap=\"round\" stroke-linejoin=\"round\" fill=\"none\">\n",
+                   simplify ? 1.2 : 1.6);
+    if (!simplify) {
+        for (std::size_t s = 0; s < segments.size(); ++s) {
+            const double* a = corner(nodes, segments.endpoints[2 * s]);
+            const double* b = corner(nodes, segments.endpoints[2 * s + 1]);
+            fmt::format_to(out, FMT_COMPILE("<path d=\"M{:.2f} {:.2f}L{:.2f} {:.2f}\"/>\n"),
+                           frame.x(a[0]), frame.y(a[1]), frame.x(b[0]), frame.y(b[1]));
+            file.flush_if_full();
+        }
+    } else {
+        constexpr double keep = 0.7;  // pixels between points kept
+        for (const auto& chain : segment_chains(segments)) {
+            double last_x = 0, last_y = 0;
+            for (std::size_t i = 0; i < chain.size(); ++i) {
+                const double* p = corner(nodes, chain[i]);
+                const double x = frame.x(p[0]), y = frame.y(p[1]);
+                if (i > 0 && i + 1 < chain.size() && std::hypot(x - last_x, y - last_y) < keep)
+                    continue;
+                fmt::format_to(out, FMT_COMPILE("{}{:.1f} {:.1f}"), i == 0 ? "<path d=\"M" : "L", x,
+                               y);
+                last_x = x;
+                last_y = y;
+            }
+            fmt::format_to(out, "\"/>\n");
+            file.flush_if_full();
+        }
+    }
+    fmt::format_to(out, "</g>\n");
+}
+
+// The small mesh, triangle by triangle.
+void draw_triangles(File& file, const Frame& frame, const MeshExport& mesh, AngleRange& angles,
+                    std::map<double, std::size_t>& regions) {
+    const NodeSet& nodes = *mesh.nodes;
+    if (mesh.attribute_count > 0) {
+        EleSource source = mesh.triangles();
+        std::vector<double> attributes(source.attribute_count);
+        std::uint32_t c[6];
+        for (std::size_t t = 0; t < source.count; ++t) {
+            source.next(c, attributes.data());
+            regions.emplace(attributes[0], 0);
+        }
+        std::size_t rank = 0;
+        for (auto& [value, r] : regions) r = rank++;
+    }
+    const bool by_region = regions.size() > 1;
+    Out out(file.buffer());
+    fmt::format_to(out,
+                   "<g id=\"triangles\" stroke=\"#303030\" stroke-width=\"0.3\" "
+                   "stroke-linejoin=\"round\">\n");
+    EleSource source = mesh.triangles();
+    std::vector<double> attributes(std::max<std::uint32_t>(source.attribute_count, 1), 0.0);
+    std::uint32_t c[6];
+    for (std::size_t t = 0; t < source.count; ++t) {
+        source.next(c, attributes.data());
+        const double* a = corner(nodes, c[0]);
+        const double* b = corner(nodes, c[1]);
+        const double* d = corner(nodes, c[2]);
+        angles.add(a, b, d);
+        const Colour fill = by_region ? region_colour(regions.at(attributes[0]))
+                                      : ramp(smallest_angle_degrees(a, b, d) / 60);
+        fmt::format_to(out,
+                       FMT_COMPILE("<polygon points=\"{:.2f},{:.2f} {:.2f},{:.2f} {:.2f},{:.2f}\" "
+                                   "fill=\"{}\"/>\n"),
+                       frame.x(a[0]), frame.y(a[1]), frame.x(b[0]), frame.y(b[1]), frame.x(d[0]),
+                       frame.y(d[1]), hex(fill));
+        file.flush_if_full();
+    }
+    fmt::format_to(out, "</g>\n");
+}
+
+// Replaces each value of the w x h image by the sum over the square of
+// (2 smoothing + 1) pixels around it (clipped at the edges): two passes of
+// running sums, rows then columns.
+constexpr int smoothing = 3;
+void box_sum(std::vector<double>& image, std::uint32_t w, std::uint32_t h) {
+    std::vector<double> line;
+    const auto pass = [&](std::size_t count, std::size_t length, std::size_t step,
+                          std::size_t stride) {
+        line.resize(length + 1);
+        for (std::size_t l = 0; l < count; ++l) {
+            double* p = image.data() + l * stride;
+            line[0] = 0;
+            for (std::size_t i = 0; i < length; ++i) line[i + 1] = line[i] + p[i * step];
+            for (std::size_t i = 0; i < length; ++i) {
+                const std::size_t a = i >= smoothing ? i - smoothing : 0;
+                const std::size_t b = std::min(length, i + smoothing + 1);
+                p[i * step] = line[b] - line[a];
+            }
+        }
+    };
+    pass(h, w, 1, w);  // each row
+    pass(w, h, w, 1);  // each column
+}
+
+// The large mesh: the density image.  Returns the density range, in
+// triangles per unit area of the mesh, of the pixels drawn.
+std::pair<double, double> draw_density(File& file, const Frame& frame, const MeshExport& mesh,
+                                       AngleRange& angles) {
+    const NodeSet& nodes = *mesh.nodes;
+    const auto w = static_cast<std::uint32_t>(frame.width);
+    const auto h = static_cast<std::uint32_t>(frame.height);
+    // What each pixel received and the area it was covered by, side by side
+    // (one cache line for both: the pass is bound by memory, not arithmetic).
+    std::vector<std::array<double, 2>> sums(std::size_t{w} * h, {0.0, 0.0});
+    // The pixels the mesh touches: drawn, the others left blank.
+    std::vector<std::uint8_t> drawn(std::size_t{w} * h, 0);
+    const auto pixel = [w, h](double x, double y) {
+        const auto i = static_cast<std::uint32_t>(std::clamp(x, 0.0, w - 1.0));
+        const auto j = static_cast<std::uint32_t>(std::clamp(y, 0.0, h - 1.0));
+        return std::size_t{j} * w + i;
+    };
+    EleSource source = mesh.triangles();
+    std::vector<double> attributes(source.attribute_count);
+    // The pass waits on memory: a triangle's corners are anywhere in the
+    // vertex array, and its pixel anywhere in the image.  So the triangles
+    // come in batches: the corners of a whole batch are fetched ahead
+    // (prefetch), then its centroid pixels, then each triangle is drawn, in
+    // order as before.
+    constexpr std::size_t batch = 256;
+    std::vector<std::uint32_t> corners(3 * batch);
+    std::vector<double> xs(3 * batch), ys(3 * batch);
+    std::vector<std::size_t> centroid_at(batch);
+    std::uint32_t c[6];
+    for (std::size_t first = 0; first < source.count; first += batch) {
+        const std::size_t n = std::min(batch, source.count - first);
+        for (std::size_t b = 0; b < n; ++b) {
+            source.next(c, attributes.data());
+            std::copy_n(c, 3, &corners[3 * b]);
+            for (int k = 0; k < 3; ++k) __builtin_prefetch(corner(nodes, c[k]));
+        }
+        for (std::size_t b = 0; b < n; ++b) {
+            const double* p[3] = {corner(nodes, corners[3 * b]), corner(nodes, corners[3 * b + 1]),
+                                  corner(nodes, corners[3 * b + 2])};
+            angles.add(p[0], p[1], p[2]);
+            for (int k = 0; k < 3; ++k) {
+                xs[3 * b + k] = frame.x(p[k][0]) - margin;
+                ys[3 * b + k] = frame.y(p[k][1]) - margin;
+            }
+            centroid_at[b] = pixel((xs[3 * b] + xs[3 * b + 1] + xs[3 * b + 2]) / 3,
+                                   (ys[3 * b] + ys[3 * b + 1] + ys[3 * b + 2]) / 3);
+            __builtin_prefetch(&sums[centroid_at[b]], 1);
+        }
+        for (std::size_t b = 0; b < n; ++b) {
+            const double* x = &xs[3 * b];
+            const double* y = &ys[3 * b];
+            // Twice the signed area in pixels; negative as y points down.
+            const double twice = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
+            const double area = std::abs(twice) / 2;
+            // The pixels whose centres (i + 0.5, j + 0.5) lie in the bounding
+            // box: none, mostly, for a triangle smaller than a pixel.
+            const double lo_x = std::max(0.0, std::ceil(std::min({x[0], x[1], x[2]}) - 0.5));
+            const double hi_x = std::min(w - 1.0, std::floor(std::max({x[0], x[1], x[2]}) - 0.5));
+            const double lo_y = std::max(0.0, std::ceil(std::min({y[0], y[1], y[2]}) - 0.5));
+            const double hi_y = std::min(h - 1.0, std::floor(std::max({y[0], y[1], y[2]}) - 0.5));
+            // A triangle of a pixel or more spreads over the pixel centres it
+            // covers; a smaller one goes to its centroid's pixel whole (spread,
+            // it would weigh too much on one centre), and the centres it
+            // covers are only marked as drawn.
+            const bool spread = area >= 1;
+            bool hit = false;
+            if (twice != 0) {
+                const double sign = twice > 0 ? 1 : -1;
+                for (double j = lo_y; j <= hi_y; ++j) {
+                    for (double i = lo_x; i <= hi_x; ++i) {
+                        const double px = i + 0.5, py = j + 0.5;
+                        bool inside = true;
+                        for (int k = 0; k < 3 && inside; ++k) {
+                            const int k1 = (k + 1) % 3;
+                            const double e =
+                                (x[k1] - x[k]) * (py - y[k]) - (y[k1] - y[k]) * (px - x[k]);
+                            inside = sign * e >= 0;
+                        }
+                        if (!inside) continue;
+                        const std::size_t at =
+                            static_cast<std::size_t>(j) * w + static_cast<std::size_t>(i);
+                        drawn[at] = 1;
+                        if (!spread) continue;
+                        sums[at][0] += 1 / area;
+                        sums[at][1] += 1;
+                        hit = true;
+                    }
+                }
+            }
+            if (!hit) {
+                const std::size_t at = centroid_at[b];
+                sums[at][0] += 1;
+                sums[at][1] += area;
+                drawn[at] = 1;
+            }
+        }
+    }
+    // One triangle per pixel is noise: the density shown is that of the
+    // square of (2 smoothing + 1) pixels around each (both sums over it).
+    std::vector<double> received(sums.size()), covered(sums.size());
+    for (std::size_t i = 0; i < sums.size(); ++i) {
+        received[i] = sums[i][0];
+        covered[i] = sums[i][1];
+    }
+    sums = {};
+    box_sum(received, w, h);
+    box_sum(covered, w, h);
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (std::size_t i = 0; i < received.size(); ++i) {
+        drawn[i] = drawn[i] != 0 && covered[i] > 0 && received[i] > 0;
+        if (drawn[i] == 0) continue;
+        received[i] = std::log10(received[i] / covered[i]);  // per square pixel
+        lo = std::min(lo, received[i]);
+        hi = std::max(hi, received[i]);
+    }
+    // At least a factor of 10 from one end of the scale to the other, so
+    // that a uniform mesh looks uniform rather than its small variations
+    // filling the scale.
+    if (hi - lo < 1) {
+        const double middle = (hi + lo) / 2;
+        lo = middle - 0.5;
+        hi = middle + 0.5;
+    }
+    std::vector<std::uint8_t> image(received.size(), 0);
+    for (std::size_t i = 0; i < received.size(); ++i) {
+        if (drawn[i] == 0) continue;
+        const double f = hi > lo ? (received[i] - lo) / (hi - lo) : 0.5;
+        image[i] = static_cast<std::uint8_t>(1 + std::lround(f * 254));
+    }
+    std::vector<Colour> palette(256);
+    palette[0] = {255, 255, 255};
+    for (int i = 1; i < 256; ++i) palette[i] = ramp((i - 1) / 254.0);
+    const std::string png = indexed_png(w, h, palette, image);
+    Out out(file.buffer());
+    fmt::format_to(out,
+                   "<image x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" "
+                   "style=\"image-rendering:pixelated\" xlink:href=\"data:image/png;base64,",
+                   margin, margin, w, h);
+    file.flush_if_full();
+    const std::string text = base64(png);
+    file.append(text.data(), text.size());
+    fmt::format_to(out, "\"/>\n");
+    if (lo > hi) return {0, 0};
+    // Per square pixel -> per unit area of the mesh.
+    const double per_unit = frame.scale * frame.scale;
+    return {std::pow(10.0, lo) * per_unit, std::pow(10.0, hi) * per_unit};
+}
+
+}  // namespace
+
+void write_svg(OutputTransaction& tx, const std::string& path, const MeshExport& mesh,
+               const WriteFormat& format) {
+    const NodeSet& nodes = *mesh.nodes;
+    if (nodes.xy.size() % 2 != 0 ||
+        (mesh.corners_per_triangle != 3 && mesh.corners_per_triangle != 6))
+        throw OutputError("cannot write " + path + ": inconsistent data");
+    static const SegmentSet no_segments;
+    const SegmentSet& segments = mesh.segments != nullptr ? *mesh.segments : no_segments;
+    const Frame frame = frame_of(nodes);
+    const bool small = mesh.triangle_count <= vector_limit;
+    const double width = std::max(2 * margin + frame.width, legend_width);
+    const double legend_top = 2 * margin + frame.height;
+    const double height = legend_top + legend_height;
+
+    File& file = tx.begin_file(path);
+    put_header(Out(file.buffer()), width, height);
+    AngleRange angles;
+    std::map<double, std::size_t> regions;
+    std::pair<double, double> density{0, 0};
+    if (small)
+        draw_triangles(file, frame, mesh, angles, regions);
+    else
+        density = draw_density(file, frame, mesh, angles);
+    put_segments(file, frame, nodes, segments, !small);
+
+    Out out(file.buffer());
+    put_counts(out, mesh, segments.size(), angles, legend_top);
+    if (!small) {
+        put_ramp_bar(out, legend_top, "triangles per unit area (too many to draw one by one)",
+                     fmt::format("{:.3g}", density.first), fmt::format("{:.3g}", density.second));
+    } else if (regions.size() > 1) {
+        double x = margin;
+        std::size_t shown = 0;
+        for (const auto& [value, rank] : regions) {
+            if (++shown > 6) {
+                fmt::format_to(out, "<text x=\"{}\" y=\"{}\">and {} more</text>\n", x,
+                               legend_top + 52, regions.size() - 6);
+                break;
+            }
+            const std::string label = fmt::format("region {}", value);
+            fmt::format_to(out,
+                           "<rect x=\"{}\" y=\"{}\" width=\"12\" height=\"12\" fill=\"{}\" "
+                           "stroke=\"#303030\" stroke-width=\"0.5\"/>\n"
+                           "<text x=\"{}\" y=\"{}\">{}</text>\n",
+                           x, legend_top + 42, hex(region_colour(rank)), x + 16, legend_top + 52,
+                           label);
+            x += 16 + 8.0 * static_cast<double>(label.size()) + 12;
+        }
+    } else {
+        put_ramp_bar(out, legend_top, "each triangle's smallest angle", "0\u00b0", "60\u00b0");
+    }
+    fmt::format_to(out, "</g>\n</svg>\n");
+    file.finish(format.command, format.stamp, File::Closing::xml_comment);
+}
+
+}  // namespace gpdr::io

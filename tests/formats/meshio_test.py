@@ -15,6 +15,8 @@ import unittest
 
 import numpy as np
 
+from triangle_rows import triangle_rows
+
 try:
     import meshio
 except ImportError:
@@ -24,19 +26,8 @@ GPDR = None
 SOURCE = None
 
 
-def triangle_file(path):
-    """The rows of a Triangle file as lists of number strings, comments gone."""
-    rows = []
-    with open(path) as f:
-        for line in f:
-            line = line.split("#", 1)[0].split()
-            if line:
-                rows.append(line)
-    return rows
-
-
 def read_node(path):
-    rows = triangle_file(path)
+    rows = triangle_rows(path)
     n, _, na, nm = (int(x) for x in rows[0])
     body = rows[1 : 1 + n]
     base = int(body[0][0]) if body else 1
@@ -47,7 +38,7 @@ def read_node(path):
 
 
 def read_ele(path, base):
-    rows = triangle_file(path)
+    rows = triangle_rows(path)
     m, nc, na = (int(x) for x in rows[0])
     body = rows[1 : 1 + m]
     corners = np.array([[int(x) - base for x in r[1 : 1 + nc]] for r in body]).reshape(m, nc)
@@ -57,7 +48,7 @@ def read_ele(path, base):
 
 def read_poly_segments(path, base):
     """The segments of an output .poly (its vertices are in the .node)."""
-    rows = triangle_file(path)
+    rows = triangle_rows(path)
     count, has_markers = int(rows[1][0]), int(rows[1][1])
     body = rows[2 : 2 + count]
     ends = [(int(r[1]) - base, int(r[2]) - base) for r in body]

@@ -19,22 +19,14 @@ import unittest
 import xml.etree.ElementTree as ET
 import zlib
 
+from triangle_rows import triangle_rows
+
 GPDR = None
 SOURCE = None
 SVG = "{http://www.w3.org/2000/svg}"
 XLINK = "{http://www.w3.org/1999/xlink}"
 # A picture of any mesh stays below this many bytes.
 SIZE_CAP = 3 * 1024 * 1024
-
-
-def rows(path):
-    out = []
-    with open(path) as f:
-        for line in f:
-            line = line.split("#", 1)[0].split()
-            if line:
-                out.append(line)
-    return out
 
 
 def run(folder, switches, sample):
@@ -71,9 +63,9 @@ class Picture(unittest.TestCase):
                 stem = run(d, switches, sample)
                 root = ET.parse(stem + ".svg").getroot()
                 self.assertEqual(root.tag, SVG + "svg")
-                node = rows(stem + ".node")
-                ele = rows(stem + ".ele")
-                poly = rows(stem + ".poly")
+                node = triangle_rows(stem + ".node")
+                ele = triangle_rows(stem + ".ele")
+                poly = triangle_rows(stem + ".poly")
                 base = int(node[1][0])
                 xy = {int(r[0]) - base: (float(r[1]), float(r[2])) for r in node[1 : 1 + int(node[0][0])]}
                 triangles = ele[1 : 1 + int(ele[0][0])]

@@ -5,6 +5,9 @@
 // where refinement added the vertex) and markers set by Triangle's rules.
 
 #include <algorithm>
+#include <string>
+
+#include <gpdr/errors.hpp>
 
 #include "api/job_stages.hpp"
 #include "mesh/traverse.hpp"
@@ -62,7 +65,11 @@ void copy_added_attributes(const mesh::Mesh& mesh, std::size_t input_count,
     nodes.attributes.resize(nodes.size() * na, 0.0);
     if (na == 0 || mesh.attributes().width() != na) return;
     for (std::size_t n = input_count; n < mesh_ids.size(); ++n) {
-        const auto row = mesh.attributes().row(mesh::VertexId{mesh_ids[n]});
+        const mesh::VertexId v{mesh_ids[n]};
+        if (!mesh.attributes().has_row(v))
+            throw InternalError("output: vertex " + std::to_string(mesh_ids[n]) +
+                                " was added without its attributes");
+        const auto row = mesh.attributes().row(v);
         std::copy(row.begin(), row.end(),
                   nodes.attributes.begin() + static_cast<std::ptrdiff_t>(n * na));
     }

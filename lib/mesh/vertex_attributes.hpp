@@ -42,6 +42,11 @@ public:
     // Attributes per vertex; 0: none are kept.
     std::uint32_t width() const { return width_; }
 
+    // Whether v's chunk of rows exists (every vertex given attributes has it).
+    bool has_row(VertexId v) const {
+        return chunks_ &&
+               chunks_[index(v) >> chunk_bits].load(std::memory_order_acquire) != nullptr;
+    }
     // The row of v, which must have been written (or made by write()).
     std::span<const double> row(VertexId v) const {
         const std::uint32_t i = index(v);

@@ -66,19 +66,27 @@ struct Array {
     std::function<void(File&)> append;
 };
 
+// Calls f(corners, attributes) on each triangle, in the file's order.
+template <class F>
+void for_each_triangle(const MeshExport& mesh, F&& f) {
+    EleSource source = mesh.triangles();
+    std::vector<double> attributes(source.attribute_count);
+    std::uint32_t c[6];
+    for (std::size_t t = 0; t < source.count; ++t) {
+        source.next(c, attributes.data());
+        f(c, attributes.data());
+    }
+}
+
 // The connectivity in VTK's corner order, as integers of type I.
 template <class I>
 void append_connectivity(File& file, const MeshExport& mesh) {
     static constexpr int vtk_order[6] = {0, 1, 2, 5, 3, 4};
     const std::uint32_t nc = mesh.corners_per_triangle;
-    EleSource source = mesh.triangles();
-    std::vector<double> attributes(source.attribute_count);
-    std::uint32_t c[6];
     Appender<I> out(file);
-    for (std::size_t t = 0; t < source.count; ++t) {
-        source.next(c, attributes.data());
+    for_each_triangle(mesh, [&](const std::uint32_t* c, const double*) {
         for (std::uint32_t k = 0; k < nc; ++k) out.push(static_cast<I>(c[vtk_order[k]]));
-    }
+    });
     out.flush();
 }
 
@@ -86,14 +94,10 @@ void append_connectivity(File& file, const MeshExport& mesh) {
 template <class T>
 void append_per_triangle(File& file, const MeshExport& mesh,
                          const std::function<double(const std::uint32_t*, const double*)>& f) {
-    EleSource source = mesh.triangles();
-    std::vector<double> attributes(source.attribute_count);
-    std::uint32_t c[6];
     Appender<T> out(file);
-    for (std::size_t t = 0; t < source.count; ++t) {
-        source.next(c, attributes.data());
-        out.push(static_cast<T>(f(c, attributes.data())));
-    }
+    for_each_triangle(mesh, [&](const std::uint32_t* c, const double* attributes) {
+        out.push(static_cast<T>(f(c, attributes)));
+    });
     out.flush();
 }
 

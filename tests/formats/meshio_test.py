@@ -123,6 +123,15 @@ def cases():
 
 
 class MeshioReadsGpdr(unittest.TestCase):
+    def check_point_data(self, mesh, vmarkers, vattr):
+        """The vertex markers (absent with -B) and attributes, as the .node has them."""
+        if vmarkers is not None:
+            self.assertTrue(np.array_equal(mesh.point_data["boundary_marker"], vmarkers))
+        else:
+            self.assertNotIn("boundary_marker", mesh.point_data)
+        for a in range(vattr.shape[1]):
+            self.assertTrue(np.array_equal(mesh.point_data[f"attribute_{a}"], vattr[:, a]))
+
     def each_case(self, check):
         for case in cases():
             with self.subTest(sample=os.path.basename(case.sample), switches=case.switches):
@@ -141,12 +150,7 @@ class MeshioReadsGpdr(unittest.TestCase):
             self.assertEqual(block.type, "triangle6" if six else "triangle")
             expected = corners[:, SIX_NODE_ORDER] if six else corners
             self.assertTrue(np.array_equal(block.data, expected))
-            if vmarkers is not None:
-                self.assertTrue(np.array_equal(mesh.point_data["boundary_marker"], vmarkers))
-            else:
-                self.assertNotIn("boundary_marker", mesh.point_data)
-            for a in range(vattr.shape[1]):
-                self.assertTrue(np.array_equal(mesh.point_data[f"attribute_{a}"], vattr[:, a]))
+            self.check_point_data(mesh, vmarkers, vattr)
             for a in range(tattr.shape[1]):
                 self.assertTrue(
                     np.array_equal(mesh.cell_data[f"region_attribute_{a}"][0], tattr[:, a])
@@ -206,12 +210,7 @@ class MeshioReadsGpdr(unittest.TestCase):
                     name = f"boundary marker {mk}" if mk is not None else "segments"
                     want.append((tuple(sorted((a, b))), name))
                 self.assertEqual(sorted(lines), sorted(want))
-            if vmarkers is not None:
-                self.assertTrue(np.array_equal(mesh.point_data["boundary_marker"], vmarkers))
-            else:
-                self.assertNotIn("boundary_marker", mesh.point_data)
-            for a in range(vattr.shape[1]):
-                self.assertTrue(np.array_equal(mesh.point_data[f"attribute_{a}"], vattr[:, a]))
+            self.check_point_data(mesh, vmarkers, vattr)
 
         self.each_case(check)
 

@@ -2,7 +2,8 @@
 # Builds gpdr's parallel tests and the gpdr program with ThreadSanitizer
 # (build-tsan) and runs them: the parallel tests, then gpdr -j4 refining a
 # sample, taking its -V statistics and writing every output file side by
-# side, and refining a sample with vertex attributes, then eight threads calling libtriangle's triangulate() at once.  Any race report fails the run.  GCC 12 gives false warnings in
+# side, and refining a sample with vertex attributes (on four threads and on two: the same
+# files), then eight threads calling libtriangle's triangulate() at once.  Any race report fails the run.  GCC 12 gives false warnings in
 # Catch2's headers under sanitizers, so -Werror is off here.
 set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -31,6 +32,12 @@ run "$build/gpdr" -Vpq30a0.02cenvj4 "$scratch/flow.poly" >/dev/null
 cp "$root/tests/data/letter.poly" "$scratch/"
 run "$build/gpdr" -Qpq30a0.001j4 "$scratch/letter.poly"
 echo "gpdr -j4 under ThreadSanitizer: no race reported"
+# The same files on two threads as on four, under the sanitizer too.
+mkdir "$scratch/two"
+cp "$scratch/letter.poly" "$scratch/two/"
+run "$build/gpdr" -Qpq30a0.001j2 "$scratch/two/letter.poly"
+for f in node ele poly; do cmp "$scratch/letter.1.$f" "$scratch/two/letter.1.$f"; done
+echo "gpdr -j2 and -j4 under ThreadSanitizer: the same files"
 # On a terminal: the progress line's thread reads the refining mesh's vertex
 # count and the files written, while four threads refine and then write
 # the files for other programs side by side (what the terminal shows is

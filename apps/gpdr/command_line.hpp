@@ -13,9 +13,9 @@ namespace gpdr::app {
 // this table is an unknown option, whatever CLI11 knows, and each name here
 // must also be declared to CLI11 in command_line.cpp.  gpdr -h and
 // man/gpdr.1 document each one (tests/cli/switch_reference_test.cpp).
-inline constexpr std::array<std::string_view, 10> long_option_names = {
-    "--threads", "--granularity", "--placement", "--unsuitable", "--force",
-    "--vtk",     "--gmsh",        "--svg",       "--help",       "--version"};
+inline constexpr std::array<std::string_view, 11> long_option_names = {
+    "--threads", "--granularity", "--placement", "--unsuitable",       "--force",  "--vtk",
+    "--gmsh",    "--svg",         "--help",      "--nondeterministic", "--version"};
 
 struct CommandLine {
     enum class Action {

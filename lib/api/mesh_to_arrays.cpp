@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <string>
+#include <tuple>
 
 #include <gpdr/errors.hpp>
 
@@ -103,12 +104,19 @@ std::function<io::EleSource()> triangle_stream(const mesh::Mesh& mesh,
                                                std::uint32_t count, std::uint32_t attribute_count,
                                                std::span<const double> region_attributes) {
     auto shared_number = std::make_shared<const std::vector<std::uint32_t>>(std::move(number));
+    constexpr std::uint32_t chunk_bits = mesh::Mesh::triangle_chunk_bits;
+    constexpr std::uint32_t chunk_mask = mesh::Mesh::TriangleTable::chunk_mask;
     return [&mesh, shared_number, count, attribute_count, region_attributes] {
         return io::EleSource{
             count, 3, attribute_count,
             [&mesh, shared_number, attribute_count, region_attributes, slot = std::uint32_t{0}](
                 std::uint32_t* corners, double* attributes) mutable {
-                while (!mesh.triangle(mesh::TriangleId{slot}).live()) ++slot;
+                while (!mesh.triangle(mesh::TriangleId{slot}).live()) {
+                    ++slot;
+                    // A chunk nobody claimed, whole (mesh.hpp).
+                    while ((slot & chunk_mask) == 0 && !mesh.has_triangle_chunk(slot >> chunk_bits))
+                        slot += chunk_mask + 1;
+                }
                 const mesh::Triangle& t = mesh.triangle(mesh::TriangleId{slot++});
                 for (int k = 0; k < 3; ++k) corners[k] = (*shared_number)[index(t.v[k])];
                 const std::size_t row = std::size_t{t.region} * attribute_count;
@@ -147,14 +155,31 @@ void set_vertex_markers(const mesh::Mesh& mesh, const std::vector<std::uint32_t>
     nodes.markers.resize(nodes.size(), 0);
     std::vector<bool> fixed(nodes.size());
     for (std::size_t v = 0; v < nodes.size(); ++v) fixed[v] = nodes.markers[v] != 0;
+    // Where two subsegments with different markers meet, the one of the
+    // earlier input segment wins, as in Triangle (then the one whose ends
+    // have the smaller numbers): not the table's own order, which depends
+    // on the order in which threads filled it.
+    struct Marked {
+        std::uint32_t segment;
+        std::uint32_t a, b;  // numbers of the ends, a < b
+        int marker;
+    };
+    std::vector<Marked> marked;
     mesh.subsegments().for_each(
         [&](mesh::VertexId a, mesh::VertexId b, const mesh::SubsegmentInfo& s) {
-            for (const auto v : {number[index(a)], number[index(b)]})
-                if (!fixed[v] && s.marker != 0) {
-                    nodes.markers[v] = s.marker;
-                    fixed[v] = true;
-                }
+            if (s.marker == 0) return;
+            const std::uint32_t x = number[index(a)], y = number[index(b)];
+            marked.push_back({s.segment, std::min(x, y), std::max(x, y), s.marker});
         });
+    std::sort(marked.begin(), marked.end(), [](const Marked& x, const Marked& y) {
+        return std::tie(x.segment, x.a, x.b) < std::tie(y.segment, y.a, y.b);
+    });
+    for (const Marked& m : marked)
+        for (const auto v : {m.a, m.b})
+            if (!fixed[v]) {
+                nodes.markers[v] = m.marker;
+                fixed[v] = true;
+            }
     mesh::for_each_hull_edge(mesh, [&](const mesh::EdgeView& e) {
         for (const auto v : {number[index(e.from)], number[index(e.to)]})
             if (!fixed[v]) nodes.markers[v] = 1;

@@ -13,6 +13,7 @@
 
 #include "api/job_stages.hpp"
 #include "parallel/refine_parallel.hpp"
+#include "parallel/rounds.hpp"
 #include "refine/refine.hpp"
 
 namespace gpdr::api {
@@ -70,10 +71,12 @@ std::vector<std::string> refine(mesh::Mesh& mesh, const refine::RefineSettings& 
     parallel::ParallelOptions p;
     p.threads = o.threads;
     p.granularity = o.granularity;
-    // One thread runs the sequential refiner (one leaf, no quadtree): the
-    // same refinement without the cost of sharing it.  So does -S, whose
-    // limit is exact only on one thread.
-    p.one_leaf_for_one_thread = true;
+    // -j1 runs the sequential refiner (one leaf, no quadtree, Triangle's
+    // order).  So does -S, whose limit is exact only on one thread.  -j0
+    // on a machine with one hardware thread runs the rounds on it: the
+    // same mesh as -j0 anywhere else.
+    p.one_leaf_for_one_thread = o.threads == 1 || o.steiner_limit;
+    p.deterministic = !o.nondeterministic;
     if (o.steiner_limit) p.threads = 1;
     parallel::ParallelReport r;
     parallel::refine_parallel(mesh, settings, p, r);
@@ -87,20 +90,42 @@ std::vector<std::string> refine(mesh::Mesh& mesh, const refine::RefineSettings& 
 #endif
     report = std::move(r.refine);
     std::vector<std::string> lines;
-    if (r.threads <= 1) return lines;
+    if (r.threads <= 1 && r.rounds.empty()) return lines;
     // The GPDR paper's Fig. 5 (right): where each thread's time went.
     const auto line = [](const char* who, unsigned i, const parallel::ThreadTimes& t) {
         return fmt::format("  {}{}: refining {:.0f} ms, managing {:.0f} ms, waiting {:.0f} ms", who,
                            i, t.refining * 1000, t.managing * 1000, t.waiting * 1000);
     };
     lines.emplace_back();
+    if (r.rounds.empty()) {
+        lines.push_back(fmt::format(
+            "Parallel refinement: {} worker threads, granularity {}, {} leaves, {} assignments",
+            r.threads, r.granularity, r.leaves, r.assignments));
+        lines.push_back(fmt::format("  master: managing {:.0f} ms, waiting {:.0f} ms",
+                                    r.master.managing * 1000, r.master.waiting * 1000));
+        for (std::size_t w = 0; w < r.workers.size(); ++w)
+            lines.push_back(line("worker ", unsigned(w + 1), r.workers[w]));
+        return lines;
+    }
+    // The deterministic schedule: its rounds, and what they allow.
+    const parallel::ScheduleShape s = parallel::schedule_shape(r.rounds);
     lines.push_back(fmt::format(
-        "Parallel refinement: {} worker threads, granularity {}, {} leaves, {} assignments",
-        r.threads, r.granularity, r.leaves, r.assignments));
-    lines.push_back(fmt::format("  master: managing {:.0f} ms, waiting {:.0f} ms",
-                                r.master.managing * 1000, r.master.waiting * 1000));
+        "Parallel refinement: {} threads, granularity {}, {} leaves, {} rounds refining {} leaves",
+        r.threads, r.granularity, r.leaves, s.rounds, s.runs));
+    lines.push_back(fmt::format("  leaves per round: {} fewest, {} median, {} most", s.fewest,
+                                s.median, s.most));
+    lines.push_back(fmt::format(
+        "  work {} triangles made, span {} (the largest leaf's of each round): work / span {:.1f}",
+        s.work, s.span, s.parallelism()));
+    lines.push_back(fmt::format(
+        "  speed-up the rounds allow: {:.1f} on 4 threads, {:.1f} on 16, "
+        "{:.1f} on 64",
+        parallel::predicted_speedup(r.rounds, 4), parallel::predicted_speedup(r.rounds, 16),
+        parallel::predicted_speedup(r.rounds, 64)));
+    lines.push_back(
+        fmt::format("  between rounds (the calling thread): {:.0f} ms", r.master.managing * 1000));
     for (std::size_t w = 0; w < r.workers.size(); ++w)
-        lines.push_back(line("worker ", unsigned(w + 1), r.workers[w]));
+        lines.push_back(line("thread ", unsigned(w + 1), r.workers[w]));
     return lines;
 }
 

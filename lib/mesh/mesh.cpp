@@ -78,7 +78,11 @@ VertexId Mesh::add_vertices(std::span<const Point> points, VertexKind kind) {
 std::size_t Mesh::count_triangles() const {
     std::size_t live = 0;
     const std::uint32_t end = triangle_end();
-    for (std::uint32_t t = 0; t < end; ++t) live += triangles_[t].live() ? 1 : 0;
+    for (std::uint32_t t = 0; t < end; t += TriangleTable::chunk_size) {
+        if (!triangles_.has_chunk(t >> triangle_chunk_bits)) continue;  // (never claimed)
+        for (std::uint32_t i = t; i < t + TriangleTable::chunk_size; ++i)
+            live += triangles_[i].live() ? 1 : 0;
+    }
     return live;
 }
 
@@ -93,6 +97,38 @@ Mesh::SpareSlots Mesh::claim_triangle_chunk() {
     s.fresh = c << triangle_chunk_bits;
     s.fresh_end = s.fresh + TriangleTable::chunk_size;
     return s;
+}
+
+namespace {
+
+// Raises `end` to at least `value`.
+void raise_to(std::atomic<std::uint32_t>& end, std::uint32_t value) {
+    std::uint32_t now = end.load(std::memory_order_relaxed);
+    while (now < value && !end.compare_exchange_weak(now, value, std::memory_order_acq_rel)) {}
+}
+
+}  // namespace
+
+Mesh::SpareSlots Mesh::claim_triangle_chunk_at(std::uint32_t c) {
+    if (c >= TriangleTable::max_chunks)
+        throw Error("mesh: more than " + std::to_string(max_triangles) + " triangles");
+    triangles_.ensure(c);
+    raise_to(triangle_chunks_, c + 1);
+    SpareSlots s;
+    s.fresh = c << triangle_chunk_bits;
+    s.fresh_end = s.fresh + TriangleTable::chunk_size;
+    return s;
+}
+
+VertexId Mesh::claim_vertex_chunk_at(std::uint32_t c) {
+    // The last chunk holds the two reserved ids (ghost_vertex, no_vertex).
+    constexpr std::uint64_t limit = index(ghost_vertex);
+    const std::uint64_t end = (std::uint64_t{c} + 1) << vertex_chunk_bits;
+    if (end > limit) throw Error("mesh: more than " + std::to_string(limit) + " vertices");
+    points_.ensure(c);
+    kinds_.ensure(c);
+    raise_to(vertex_end_, static_cast<std::uint32_t>(end));
+    return VertexId{c << vertex_chunk_bits};
 }
 
 void Mesh::give_back(const SpareSlots& spare) {

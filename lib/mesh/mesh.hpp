@@ -107,6 +107,34 @@ public:
     std::size_t triangle_store_bytes() const { return triangles_.bytes(); }
     std::size_t vertex_store_bytes() const { return points_.bytes() + kinds_.bytes(); }
 
+    // ---- ids by a fixed rule (Pool's lanes) -------------------------------
+    // The deterministic parallel refiner gives each of its lanes chunks of
+    // ids by a rule that depends on the lane alone (pool.hpp), so that the
+    // ids a lane hands out never depend on which thread claimed first.  Ids
+    // then have holes: whole chunks nobody claimed (they read as dead
+    // triangles and unused vertices: store.hpp), and the unused end of each
+    // lane's last chunk.
+    //
+    // The first triangle chunk and the first vertex chunk above every id
+    // claimed so far.
+    std::uint32_t triangle_chunks_claimed() const {
+        return triangle_chunks_.load(std::memory_order_acquire);
+    }
+    std::uint32_t vertex_chunks_claimed() const {
+        return static_cast<std::uint32_t>((std::uint64_t{vertex_end()} + PointTable::chunk_mask) >>
+                                          vertex_chunk_bits);
+    }
+    struct SpareSlots;
+    // Claims triangle chunk c (its slots, as claim_triangle_chunk gives them)
+    // or vertex chunk c (its ids; the first is returned).  Thread-safe;
+    // throws gpdr::Error past the limits on ids.
+    SpareSlots claim_triangle_chunk_at(std::uint32_t c);
+    VertexId claim_vertex_chunk_at(std::uint32_t c);
+    // Whether chunk c holds ids anyone claimed (a pass over all ids may skip
+    // the others).
+    bool has_triangle_chunk(std::uint32_t c) const { return triangles_.has_chunk(c); }
+    bool has_vertex_chunk(std::uint32_t c) const { return kinds_.has_chunk(c); }
+
     // ---- for Pool only -----------------------------------------------------
     // Triangle slots a pool owns and has not used: an intrusive free list
     // (linked through n[0] of dead slots) and a fresh range [fresh, fresh_end).

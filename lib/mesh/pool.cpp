@@ -13,6 +13,9 @@ Pool::Pool(Mesh& mesh, std::uint32_t vertex_block)
     mesh_->take_back(spare_);
 }
 
+Pool::Pool(Mesh& mesh, const Lane& lane)
+    : mesh_(&mesh), vertex_block_(Mesh::PointTable::chunk_size), on_lane_(true), lane_(lane) {}
+
 Pool::~Pool() {
     mesh_->give_back(spare_);
     mesh_->give_back_vertices(vertex_next_, vertex_end_);
@@ -26,12 +29,22 @@ void Pool::destroyed_twice(TriangleId t) {
 void Pool::refill() {
     // A free list given back earlier comes first; otherwise a fresh chunk.
     // (Only called with an empty free list and fresh range.)
-    if (!mesh_->take_back(spare_)) spare_ = mesh_->claim_triangle_chunk();
+    if (on_lane_) {
+        // (Never the slots another pool gave back: which lane took them
+        // would depend on timing.)
+        spare_ = mesh_->claim_triangle_chunk_at(lane_.triangle_chunk + lane_.index +
+                                                lane_triangle_chunks_++ * lane_.count);
+    } else if (!mesh_->take_back(spare_)) {
+        spare_ = mesh_->claim_triangle_chunk();
+    }
 }
 
 VertexId Pool::new_vertex(const Point& p, VertexKind kind) {
     if (vertex_next_ == vertex_end_) {
-        vertex_next_ = index(mesh_->claim_vertices(vertex_block_));
+        vertex_next_ =
+            on_lane_ ? index(mesh_->claim_vertex_chunk_at(lane_.vertex_chunk + lane_.index +
+                                                          lane_vertex_chunks_++ * lane_.count))
+                     : index(mesh_->claim_vertices(vertex_block_));
         vertex_end_ = vertex_next_ + vertex_block_;
     }
     const VertexId v{vertex_next_++};

@@ -12,6 +12,13 @@
 // end, the unused tail of the block is returned if nobody claimed after it
 // (always so with one thread), otherwise those ids stay `unused` holes.
 //
+// A pool on a LANE (the deterministic parallel refiner's) claims by a fixed
+// rule instead: lane k of n takes triangle chunks and vertex chunks
+// base + k, base + n + k, base + 2n + k, ... of the ids above those claimed
+// when the lanes were made.  The ids it hands out then depend only on the
+// sequence of creations and destructions asked of it, whatever other lanes
+// do at the same time and whichever thread runs it.
+//
 // A pool must not outlive its mesh.  When destroyed it gives its unused slots
 // back to the mesh, and the next pool created starts from them.
 
@@ -21,9 +28,21 @@
 
 namespace gpdr::mesh {
 
+struct Lane {
+    std::uint32_t index = 0;           // k
+    std::uint32_t count = 1;           // n
+    std::uint32_t triangle_chunk = 0;  // the bases: the first chunks of the lanes' ids
+    std::uint32_t vertex_chunk = 0;
+    // The bases for lanes made on `mesh` now: the chunks above every id claimed.
+    static Lane first(const Mesh& mesh, std::uint32_t count) {
+        return {0, count, mesh.triangle_chunks_claimed(), mesh.vertex_chunks_claimed()};
+    }
+};
+
 class Pool {
 public:
     explicit Pool(Mesh& mesh, std::uint32_t vertex_block = 256);
+    Pool(Mesh& mesh, const Lane& lane);
     ~Pool();
     Pool(const Pool&) = delete;
     Pool& operator=(const Pool&) = delete;
@@ -78,6 +97,10 @@ private:
     std::uint32_t vertex_block_;
     std::uint32_t vertex_next_ = 0;
     std::uint32_t vertex_end_ = 0;
+    bool on_lane_ = false;
+    Lane lane_;
+    std::uint32_t lane_triangle_chunks_ = 0;  // claimed so far on the lane
+    std::uint32_t lane_vertex_chunks_ = 0;
 };
 
 }  // namespace gpdr::mesh

@@ -7,6 +7,12 @@
 // Chunks come from calloc: pages nobody touches cost nothing, and an all-zero
 // element must therefore be a valid "empty" element of T.
 //
+// A chunk never made reads as zeros (one read-only mapping shared by every
+// missing chunk of the table's type): ids may have holes of whole chunks
+// (the deterministic parallel refiner's lanes claim chunks by a fixed rule,
+// mesh.hpp), and a pass over all ids then reads empty elements there
+// instead of following a null pointer.  Writing into a missing chunk faults.
+//
 // Thread safety: ensure() may be called by several threads at once (the first
 // to publish a chunk wins, lock-free).  Element access needs no lock: a thread
 // only reads elements whose ids reached it through some synchronisation (the
@@ -19,6 +25,8 @@
 #include <memory>
 #include <new>
 
+#include <sys/mman.h>
+
 namespace gpdr::mesh {
 
 template <class T, unsigned ChunkBits, std::uint32_t MaxChunks>
@@ -28,7 +36,11 @@ public:
     static constexpr std::uint32_t chunk_mask = chunk_size - 1;
     static constexpr std::uint32_t max_chunks = MaxChunks;
 
-    ChunkTable() : chunks_(new std::atomic<T*>[MaxChunks]) {}
+    ChunkTable() : chunks_(new std::atomic<T*>[MaxChunks]) {
+        T* const zero = zero_chunk();
+        for (std::uint32_t c = 0; c < MaxChunks; ++c)
+            chunks_[c].store(zero, std::memory_order_relaxed);
+    }
     ~ChunkTable() { release(); }
     ChunkTable(ChunkTable&& other) noexcept
         : chunks_(std::move(other.chunks_)), allocated_(other.allocated_.load()) {
@@ -51,7 +63,7 @@ public:
     }
 
     bool has_chunk(std::uint32_t c) const {
-        return c < MaxChunks && chunks_[c].load(std::memory_order_acquire) != nullptr;
+        return c < MaxChunks && chunks_[c].load(std::memory_order_acquire) != zero_chunk();
     }
 
     // Makes sure chunk c exists (zero-filled).  Returns false when c is past
@@ -65,7 +77,8 @@ public:
     // is made faults each page in once, privately.
     bool ensure(std::uint32_t c, bool write_now = false) {
         if (c >= MaxChunks) return false;
-        if (chunks_[c].load(std::memory_order_acquire) != nullptr) return true;
+        T* const zero = zero_chunk();
+        if (chunks_[c].load(std::memory_order_acquire) != zero) return true;
         T* fresh = static_cast<T*>(std::calloc(chunk_size, sizeof(T)));
         if (fresh == nullptr) throw std::bad_alloc();
         if (write_now) {
@@ -76,7 +89,7 @@ public:
             for (std::size_t at = 0; at < std::size_t{chunk_size} * sizeof(T); at += 4096)
                 bytes[at] = 0;
         }
-        T* expected = nullptr;
+        T* expected = zero;
         if (chunks_[c].compare_exchange_strong(expected, fresh, std::memory_order_acq_rel))
             allocated_.fetch_add(1, std::memory_order_relaxed);
         else
@@ -92,14 +105,28 @@ public:
     }
 
 private:
+    // The zeros every missing chunk reads: read-only anonymous pages (the
+    // kernel's zero page; no memory is used for them), mapped once for the
+    // process and never unmapped.
+    static T* zero_chunk() {
+        static T* const zero = [] {
+            void* p = mmap(nullptr, std::size_t{chunk_size} * sizeof(T), PROT_READ,
+                           MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+            if (p == MAP_FAILED) throw std::bad_alloc();
+            return static_cast<T*>(p);
+        }();
+        return zero;
+    }
+
     // Stops once every allocated chunk is freed: a small mesh holds a few
     // chunks of a table reserved for millions, and a sanitizer's free()
     // costs a stack trace even for a null pointer.
     void release() {
         if (!chunks_) return;
         std::size_t left = allocated_.load(std::memory_order_relaxed);
+        T* const zero = zero_chunk();
         for (std::uint32_t c = 0; c < MaxChunks && left > 0; ++c)
-            if (T* chunk = chunks_[c].exchange(nullptr)) {
+            if (T* chunk = chunks_[c].exchange(zero); chunk != zero) {
                 std::free(chunk);
                 --left;
             }

@@ -25,12 +25,17 @@ struct EdgeView {
 };
 
 // f(TriangleId, const Triangle&) for every live triangle, in id order.
+// (Chunks nobody claimed are skipped whole: mesh.hpp.)
 template <class F>
 void for_each_triangle(const Mesh& mesh, F&& f) {
+    constexpr std::uint32_t chunk = Mesh::TriangleTable::chunk_size;
     const std::uint32_t end = mesh.triangle_end();
-    for (std::uint32_t i = 0; i < end; ++i) {
-        const Triangle& t = mesh.triangle(TriangleId{i});
-        if (t.live()) f(TriangleId{i}, t);
+    for (std::uint32_t first = 0; first < end; first += chunk) {
+        if (!mesh.has_triangle_chunk(first / chunk)) continue;
+        for (std::uint32_t i = first; i < first + chunk; ++i) {
+            const Triangle& t = mesh.triangle(TriangleId{i});
+            if (t.live()) f(TriangleId{i}, t);
+        }
     }
 }
 

@@ -13,10 +13,12 @@
 #include <limits>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include "geometry/constructions.hpp"
 #include "mesh/traverse.hpp"
+#include "parallel/rounds.hpp"
 #include "parallel/scheduler.hpp"
 #include "parallel/segment_labels.hpp"
 #include "parallel/worker.hpp"
@@ -280,7 +282,7 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in
                      const ParallelOptions& options, ParallelReport& report) {
     const unsigned threads = thread_count(options.threads);
     const unsigned granularity =
-        options.granularity != 0 ? options.granularity : default_granularity(threads);
+        options.granularity != 0 ? options.granularity : default_granularity;
     report.threads = threads;
     report.granularity = granularity;
     refine::RefineSettings settings = settings_in;
@@ -307,9 +309,18 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in
     refine::RefineRun run(mesh, settings);
     const Square root = root_square(mesh);
     Quadtree tree(root.x0, root.y0, root.side);
+    // The workers: one per thread, or the deterministic schedule's lanes,
+    // whose pools claim ids by their own rule (made in order: mesh::Lane).
     std::vector<std::unique_ptr<Worker>> workers;
-    for (unsigned w = 0; w < threads; ++w)
-        workers.push_back(std::make_unique<Worker>(mesh, run, tree, options));
+    const mesh::Lane first_lane = mesh::Lane::first(mesh, lane_count);
+    for (unsigned w = 0; w < (options.deterministic ? lane_count : threads); ++w) {
+        std::optional<mesh::Lane> lane;
+        if (options.deterministic) {
+            lane = first_lane;
+            lane->index = w;
+        }
+        workers.push_back(std::make_unique<Worker>(mesh, run, tree, options, lane));
+    }
 
     // The first leaf: the root, every triangle counted and classified.
     Node& root_node = tree.node(Quadtree::root());
@@ -346,7 +357,9 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in
                     "a worker counted a triangle in a leaf outside its buffer zone");
     };
 
-    if (threads == 1) {
+    if (options.deterministic) {
+        run_rounds(workers, scheduler, threads, options, report, failure, check);
+    } else if (threads == 1) {
         // The same schedule on the calling thread: no master, no worker threads.
         Worker& worker = *workers[0];
         for (;;) {
@@ -374,7 +387,7 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in
         merge(report.refine, w->report);
         const auto& g = w->refiner().given_up();
         given_up.insert(given_up.end(), g.begin(), g.end());
-        report.workers.push_back(w->times);
+        if (!options.deterministic) report.workers.push_back(w->times);  // (else by thread)
         report.handed_off_local += w->handed_off_local;
         report.relation9_exceptions += w->relation9_exceptions;
         if (w->zone_escapes != 0 && options.checked)

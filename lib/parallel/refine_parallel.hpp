@@ -11,14 +11,17 @@
 //
 // Guarantees: those of refine::refine_mesh (same quality criteria, limits,
 // placement strategies, small-angle protection; a valid constrained
-// Delaunay mesh), with the mesh, vertex numbering and triangle order
-// depending on the thread schedule.  A user triunsuitable() or placement
-// strategy is called from several threads at once and must be thread-safe.
+// Delaunay mesh).  With the deterministic schedule (the default,
+// rounds.hpp) the mesh, its vertex ids and its triangle ids are the same
+// for any number of threads and from run to run; otherwise they depend on
+// the thread schedule.  A user triunsuitable() or placement strategy is
+// called from several threads at once and must be thread-safe.
 //
-// threads == 1 runs the quadtree schedule on the calling thread with no
-// master thread and no worker threads (the same refinement as -jN, one leaf
-// at a time), unless ParallelOptions::one_leaf_for_one_thread asks for the
-// sequential refiner's single leaf that never splits (refine::refine_mesh).
+// threads == 1 runs the quadtree schedule on the calling thread (the same
+// rounds as -jN, one leaf at a time; without the deterministic schedule,
+// one leaf at a time with no master thread), unless
+// ParallelOptions::one_leaf_for_one_thread asks for the sequential
+// refiner's single leaf that never splits (refine::refine_mesh).
 
 #include <algorithm>
 #include <cstdint>
@@ -58,6 +61,10 @@ struct ParallelReport {
     // scheduler widened the buffer zones for them; see quadtree.hpp).
     std::uint64_t relation9_exceptions = 0;
     bool serialised = false;  // a triangle outgrew the root: the rest ran one leaf at a time
+    // The deterministic schedule (rounds.hpp): for each round, the work of
+    // each leaf refined in it (the triangles its run created), in the
+    // round's order.  Empty for the other schedules.
+    std::vector<std::vector<std::uint64_t>> rounds;
     // Checked mode: the invariant checks that failed (empty when all held).
     std::vector<std::string> problems;
     std::uint64_t checks = 0;  // quadtree verifications run (checked mode)
@@ -71,23 +78,23 @@ inline unsigned thread_count(unsigned requested) {
 
 struct ParallelOptions {
     unsigned threads = 0;      // 0: thread_count(0)
-    unsigned granularity = 0;  // 0: default_granularity(threads)
+    unsigned granularity = 0;  // 0: default_granularity
     // Verify the quadtree (relation (9) for every leaf, exact counters,
     // leaves tiling the root) after every leaf refinement (the master waits
     // until no worker is busy first), and buffer-zone exclusivity at every
     // assignment.  Failures go to ParallelReport::problems.  Slow: tests.
     bool checked = false;
     bool one_leaf_for_one_thread = false;
+    // The deterministic schedule (rounds.hpp): the same mesh, ids and all,
+    // for any number of threads.  Otherwise the master hands leaves out as
+    // workers come free, and the mesh depends on their timing.
+    bool deterministic = true;
 };
 
-// Granularity when none is given, for `threads` workers, by measurement
-// (docs/performance.md, "Parallel refinement"): with two workers -g5's
-// fewer, larger leaves (1,750 against -g4's 6,400 on the graded pipe) cost
-// less upkeep and still balance, and refine faster than -g4; -g1 and -g2
-// make so many small leaves that the master and the leaves' memory
-// dominate; -g6 balances worse.  More workers need more leaves: on 16
-// cores -g4 was the fastest (-g3 no faster).
-inline unsigned default_granularity(unsigned threads) { return threads <= 2 ? 5 : 4; }
+// Granularity when none is given, the same for any number of threads (the
+// deterministic schedule's rounds, and so the mesh, depend on it), by
+// measurement (docs/performance.md, "Parallel refinement").
+inline constexpr unsigned default_granularity = 5;
 
 // How many σ levels below the split threshold (2 + g: Worker::should_split)
 // a leaf refines triangles poor by their angle before it splits, in the
@@ -109,7 +116,7 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings,
                      const ParallelOptions& options, ParallelReport& report);
 
 // The job pipeline's entry: threads 0 = hardware threads, granularity 0 =
-// default_granularity(threads).
+// default_granularity.
 inline void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings,
                             unsigned threads, unsigned granularity, ParallelReport& report) {
     ParallelOptions o;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 #include <unordered_map>
 
 #include <fmt/format.h>
@@ -34,8 +35,14 @@ long Scheduler::key(NodeId leaf) const {
 void Scheduler::offer(NodeId leaf) {
     // Every change to a leaf's work is followed by an offer; the leaf is
     // queued again only when its key changed (the older entry goes stale).
+    // Rounds sort their candidates afresh: they wait unsorted, once each.
     Info& i = info(leaf);
     if (i.held || tree_.node(leaf).get_kind() != NodeKind::leaf || !has_work(leaf)) return;
+    if (rounds_) {
+        if (!i.queued) waiting_.push_back(leaf);
+        i.queued = true;
+        return;
+    }
     const long k = key(leaf);
     if (i.queued && i.queued_key == k) return;
     i.queued = true;
@@ -113,6 +120,14 @@ NodeId Scheduler::assign(int entry, unsigned busy) {
     for (const auto& b : blocked) queue_.push(b);
     if (chosen == no_node) return no_node;
 
+    hold(entry, chosen);
+    unsigned concurrent = 0;
+    for (const Active& b : active_) concurrent += b.leaf != no_node ? 1 : 0;
+    report_.most_concurrent = std::max(report_.most_concurrent, concurrent);
+    return chosen;
+}
+
+void Scheduler::hold(int entry, NodeId chosen) {
     if (checked_) {
         // Exclusivity, checked independently of the held flags: the new zone
         // against every zone being refined.
@@ -140,10 +155,69 @@ NodeId Scheduler::assign(int entry, unsigned busy) {
     for (NodeId z : a.zone)
         if (tree_.node(z).level + 2 <= level) a.balance.push_back(z);
     ++report_.assignments;
-    unsigned concurrent = 0;
-    for (const Active& b : active_) concurrent += b.leaf != no_node ? 1 : 0;
-    report_.most_concurrent = std::max(report_.most_concurrent, concurrent);
-    return chosen;
+}
+
+namespace {
+
+// The bits of x spread to the even positions of the result.
+std::uint64_t spread(std::uint32_t x) {
+    std::uint64_t v = x;
+    v = (v | (v << 16)) & 0x0000FFFF0000FFFFull;
+    v = (v | (v << 8)) & 0x00FF00FF00FF00FFull;
+    v = (v | (v << 4)) & 0x0F0F0F0F0F0F0F0Full;
+    v = (v | (v << 2)) & 0x3333333333333333ull;
+    v = (v | (v << 1)) & 0x5555555555555555ull;
+    return v;
+}
+
+// Morton code of cell (ix, iy): the order of cells of one level along a
+// Z curve, which the round's order uses where the key ties.
+std::uint64_t morton(std::uint32_t ix, std::uint32_t iy) { return spread(ix) | (spread(iy) << 1); }
+
+}  // namespace
+
+void Scheduler::plan_round(std::vector<NodeId>& round) {
+    round.clear();
+    struct Candidate {
+        long key;
+        int level;
+        std::uint64_t cell;
+        NodeId leaf;
+    };
+    rounds_ = true;
+    // (The first round finds the root in the queue.)
+    for (; !queue_.empty(); queue_.pop()) {
+        info(queue_.top().second).queued = false;
+        offer(queue_.top().second);
+    }
+    std::vector<Candidate> candidates;
+    candidates.reserve(waiting_.size());
+    for (const NodeId x : waiting_) {
+        Info& i = info(x);
+        i.queued = false;
+        if (tree_.node(x).get_kind() != NodeKind::leaf || i.held || !has_work(x)) continue;
+        const Node& n = tree_.node(x);
+        candidates.push_back({key(x), n.level, morton(n.ix, n.iy), x});
+    }
+    waiting_.clear();
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+        return std::tie(a.key, a.level, a.cell) < std::tie(b.key, b.level, b.cell);
+    });
+    for (const Candidate& c : candidates) {
+        if (serial_ && !round.empty()) break;
+        if (info(c.leaf).held) continue;  // in a zone taken: offered again when it completes
+        const NodeId held =
+            tree_.zone_until(c.leaf, zone_scratch_, [&](NodeId z) { return info(z).held; });
+        if (held != no_node) continue;
+        const int entry = static_cast<int>(round.size());
+        if (active_.size() <= static_cast<std::size_t>(entry)) active_.resize(entry + 1);
+        hold(entry, c.leaf);
+        round.push_back(c.leaf);
+    }
+    report_.most_concurrent =
+        std::max(report_.most_concurrent, static_cast<unsigned>(round.size()));
+    // The others wait for the next round.
+    for (const Candidate& c : candidates) offer(c.leaf);
 }
 
 void Scheduler::move_assignment(int from, int to) {

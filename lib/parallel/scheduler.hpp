@@ -65,6 +65,17 @@ public:
     // The next leaf for entry `entry`, its zone held; no_node if none can be
     // handed out now (`busy`: the assignments not completed).
     NodeId assign(int entry, unsigned busy);
+    // The deterministic schedule's choice instead (refine_parallel.cpp,
+    // run_rounds): one ROUND of leaves refined side by side.  Every leaf
+    // with work is looked at in a fixed order, the queue's key, then level,
+    // then the cell's Morton code (never node ids: which thread made a node
+    // decides its id), and taken when its zone shares no leaf with the
+    // zones taken before it in this round.  The leaves, in that order, are
+    // held under entries 0, 1, ... (`round` receives them; none when no
+    // leaf has work); the caller completes them in the same order once all
+    // have run.  So the rounds, and what each leaf finds, depend on the
+    // mesh alone, never on timing.
+    void plan_round(std::vector<NodeId>& round);
     // The leaves of the zone of entry's assignment two or more levels above
     // its leaf, handed over once: its worker splits those that are idle with
     // a count of 0 when its run ends (Worker::run).
@@ -108,6 +119,8 @@ private:
         std::vector<std::pair<long, NodeId>> parked;
         std::vector<NodeId> balance;  // until take_balance_candidates
     };
+    // Hands out `chosen` under `entry`: holds its zone (zone_scratch_).
+    void hold(int entry, NodeId chosen);
     // Publishes a split its worker made: children first, then the parent.
     void publish_split(NodeId leaf);
     Info& info(NodeId id) { return tree_.node(id).state->master; }
@@ -125,6 +138,10 @@ private:
                         std::greater<>>
         queue_;
     std::vector<Active> active_;  // by entry
+    // Rounds (plan_round) keep the leaves offered in `waiting_` instead of
+    // the queue, each once (MasterInfo::queued).
+    bool rounds_ = false;
+    std::vector<NodeId> waiting_;
     std::vector<NodeId> zone_scratch_;
 };
 

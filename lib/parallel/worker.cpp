@@ -61,13 +61,22 @@ CellRecord cell_record(const Quadtree& tree, const Point& centre, double radius_
            (std::uint64_t(x_lo) << 26) | std::uint64_t(y_lo);
 }
 
+namespace {
+
+mesh::Pool make_pool(mesh::Mesh& mesh, const std::optional<mesh::Lane>& lane) {
+    if (lane) return mesh::Pool(mesh, *lane);
+    return mesh::Pool(mesh);
+}
+
+}  // namespace
+
 Worker::Worker(mesh::Mesh& mesh, refine::RefineRun& run, Quadtree& tree,
-               const ParallelOptions& options)
+               const ParallelOptions& options, const std::optional<mesh::Lane>& lane)
     : mesh_(mesh),
       run_(run),
       tree_(tree),
       options_(options),
-      pool_(mesh),
+      pool_(make_pool(mesh, lane)),
       refiner_(run, pool_, report) {
     refiner_.set_observer(this);
 }

@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <vector>
 
 #include "mesh/pool.hpp"
@@ -113,8 +114,10 @@ CellRecord cell_record(const Quadtree& tree, const Point& centre, double radius_
 
 class Worker final : public refine::MeshObserver {
 public:
-    Worker(mesh::Mesh& mesh, refine::RefineRun& run, Quadtree& tree,
-           const ParallelOptions& options);
+    // With a lane, the worker's pool claims ids by the lane's rule (the
+    // deterministic schedule, rounds.hpp).
+    Worker(mesh::Mesh& mesh, refine::RefineRun& run, Quadtree& tree, const ParallelOptions& options,
+           const std::optional<mesh::Lane>& lane = std::nullopt);
 
     // Counts every live triangle (single-threaded, before refinement starts).
     void count_all();

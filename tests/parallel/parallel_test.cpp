@@ -172,7 +172,7 @@ TEST_CASE("timing report has one entry per worker and the API defaults", "[paral
     ParallelReport report;
     refine_parallel(m, settings_for(20, 1e-3), 2, 0, report);
     CHECK(report.threads == 2);
-    CHECK(report.granularity == default_granularity(2));
+    CHECK(report.granularity == default_granularity);
     REQUIRE(report.workers.size() == 2);
     CHECK(report.workers[0].refining + report.workers[1].refining > 0);
     CHECK(report.assignments > 0);

@@ -1,0 +1,98 @@
+// The same files for any thread count: gpdr -j2, -j3 and -j8 (twice) write
+// byte-identical files for the samples and models, with angle and area
+// bounds, regions, attributes, a triunsuitable() plug-in and the files for
+// other programs; and each mesh passes -C's check.
+
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "cli/cli_support.hpp"
+
+using namespace gpdr::test;
+
+namespace {
+
+struct Run {
+    std::string input;     // a path under the source tree
+    std::string switches;  // without -j
+};
+
+// Every file of the run, by name, with its bytes.
+std::vector<std::pair<std::string, std::string>> files_of(const TempDir& dir,
+                                                          const std::string& stem) {
+    std::vector<std::pair<std::string, std::string>> files;
+    for (const std::string& name : dir.files())
+        if (name.rfind(stem + ".1.", 0) == 0) files.emplace_back(name, dir.read(name));
+    return files;
+}
+
+}  // namespace
+
+TEST_CASE("gpdr writes the same bytes on any number of threads", "[cli][determinism]") {
+    const std::vector<Run> runs = {
+        {"poly-samples/flow.poly", "-pq30a0.05C --vtk --gmsh"},
+        {"poly-samples/pipe.poly", "-pq33C"},
+        {"poly-samples/pipe.poly", "-pa2C"},
+        {"tests/data/face.poly", "-pq25a0.0005AenC"},
+        {"tests/data/letter.poly", "-pq30a0.001C"},
+        {"tests/data/models/channel.poly", "-pq34C"},
+        {"tests/data/models/crossing.poly", "-pq28a0.01C"},
+        {"tests/data/nested_hex.poly", "-pq20a0.001Ao2C --svg"},
+    };
+    for (const Run& r : runs) {
+        const fs::path input = source_dir() / r.input;
+        const std::string name = input.filename().string();
+        const std::string stem = input.stem().string();
+        INFO(r.input << " " << r.switches);
+        std::vector<std::pair<std::string, std::string>> expected;
+        for (const char* threads : {"-j2", "-j3", "-j8", "-j8"}) {
+            INFO(threads);
+            TempDir dir;
+            fs::copy_file(input, dir / name);
+            const RunResult result = run_gpdr(dir, "-Q " + r.switches + " " + threads + " " + name);
+            INFO(result.err);
+            REQUIRE(result.status == 0);
+            const auto files = files_of(dir, stem);
+            REQUIRE(files.size() >= 3);
+            if (expected.empty()) {
+                expected = files;
+                continue;
+            }
+            REQUIRE(files.size() == expected.size());
+            for (std::size_t i = 0; i < files.size(); ++i) {
+                INFO(files[i].first);
+                CHECK(files[i].first == expected[i].first);
+                CHECK(files[i].second == expected[i].second);
+            }
+        }
+    }
+}
+
+TEST_CASE("a triunsuitable() plug-in's mesh is the same on any number of threads",
+          "[cli][determinism][plugin]") {
+    // The graded pipe's plug-in (poly-samples/grading.c), coarser.
+    TempDir lib;
+    const std::string compile = "cc -O2 -shared -fPIC -DGRADING_C=0.1 -o '" +
+                                (lib / "grading.so").string() + "' '" +
+                                (project_samples() / "grading.c").string() + "' -lm 2>&1";
+    REQUIRE(std::system("command -v cc >/dev/null 2>&1") == 0);  // (setup.sh installs one)
+    REQUIRE(std::system(compile.c_str()) == 0);
+    const fs::path plugin = lib / "grading.so";
+    std::string expected;
+    for (const char* threads : {"-j2", "-j5"}) {
+        TempDir dir;
+        fs::copy_file(project_samples() / "pipe.poly", dir / "pipe.poly");
+        const RunResult result = run_gpdr(
+            dir, std::string("-Qpq20 ") + threads + " --unsuitable '" + plugin.string() + "' pipe.poly");
+        INFO(result.err);
+        REQUIRE(result.status == 0);
+        const std::string ele = dir.read("pipe.1.ele") + dir.read("pipe.1.node");
+        if (expected.empty())
+            expected = ele;
+        else
+            CHECK(ele == expected);
+    }
+}

@@ -176,6 +176,20 @@ std::uint64_t morton(std::uint32_t ix, std::uint32_t iy) { return spread(ix) | (
 
 }  // namespace
 
+bool Scheduler::touches_held(NodeId x) {
+    const Square s = tree_.square(x);
+    const double d = s.side * 0x1p-20;
+    const double xs[3] = {s.x0 - d, s.x0 + 0.5 * s.side, s.x0 + s.side + d};
+    const double ys[3] = {s.y0 - d, s.y0 + 0.5 * s.side, s.y0 + s.side + d};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            if (i == 1 && j == 1) continue;
+            const NodeId n = tree_.leaf_at({xs[i], ys[j]});
+            if (n != x && info(n).held) return true;
+        }
+    return false;
+}
+
 void Scheduler::plan_round(std::vector<NodeId>& round) {
     round.clear();
     struct Candidate {
@@ -206,6 +220,7 @@ void Scheduler::plan_round(std::vector<NodeId>& round) {
     for (const Candidate& c : candidates) {
         if (serial_ && !round.empty()) break;
         if (info(c.leaf).held) continue;  // in a zone taken: offered again when it completes
+        if (touches_held(c.leaf)) continue;
         const NodeId held =
             tree_.zone_until(c.leaf, zone_scratch_, [&](NodeId z) { return info(z).held; });
         if (held != no_node) continue;

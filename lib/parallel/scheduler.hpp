@@ -119,6 +119,12 @@ private:
         std::vector<std::pair<long, NodeId>> parked;
         std::vector<NodeId> balance;  // until take_balance_candidates
     };
+    // Whether a leaf touching x (beside one of its sides' midpoints or
+    // corners) is held: then x's zone holds it (their distance is 0).  A
+    // few descents of the tree, where the zone search costs about six times
+    // as many instructions; it settles most of the leaves a round passes
+    // over, and the zone search the rest.
+    bool touches_held(NodeId x);
     // Hands out `chosen` under `entry`: holds its zone (zone_scratch_).
     void hold(int entry, NodeId chosen);
     // Publishes a split its worker made: children first, then the parent.

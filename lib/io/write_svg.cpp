@@ -347,8 +347,8 @@ void box_sum(std::vector<std::uint32_t>& image, std::uint32_t w, std::uint32_t h
 // the vertices' density shows the triangles' and costs a sequential read of
 // the coordinates.  The triangles, read in any case for the angle range,
 // mark the vertices they use (a vertex in a hole, or a duplicate, belongs to
-// no triangle and is not drawn) and the pixels they cover where they are
-// larger than a pixel.
+// no triangle and is not drawn) and, where they are not much smaller than
+// a pixel, the pixel centres they cover.
 struct DensityCounts {
     std::uint32_t w = 0, h = 0;
     std::vector<std::uint32_t> vertices;

@@ -127,7 +127,7 @@ std::string help_text() {
            "                         groups.  Numbered from 1.\n"
            "  --svg                  Also write a picture of the mesh (.svg): triangles shaded\n"
            "                         by smallest angle or region, segments, a legend; above\n"
-           "                         20000 triangles, shaded by triangle density instead.\n"
+           "                         20000 triangles, shaded by mesh density instead.\n"
            "  --help                 The same as -h.\n"
            "  --version              Print the version and exit.\n"
            "\n"

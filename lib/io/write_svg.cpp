@@ -10,21 +10,22 @@
 //
 // A larger mesh cannot be drawn edge by edge in a file of a few MB, and its
 // edges would be far below a pixel anyway.  It is shaded instead by its
-// local density, the triangles per unit area around each pixel, on a
-// logarithmic scale: where the mesh is graded, the grading shows.  Each
-// triangle of a pixel or more adds to the pixels whose centres it covers
-// (1 / its area in pixels each); a smaller one, or one that covers no
-// pixel centre, adds all of itself to the pixel of its centroid.  A pixel's
-// density is what the square of 7 x 7 pixels around it received over the
-// area they were covered by; pixels whose centre no triangle covers, nor
-// holds a centroid, are left blank.  The image is an embedded PNG (png_image.hpp);
-// the segments are drawn over it as polylines through chains of segments,
-// leaving out points closer than a fraction of a pixel to the last one
-// kept.
+// local density, the vertices per unit area around each pixel (a planar
+// triangulation has about twice as many triangles as vertices, so this
+// shows the triangles' density too), on a logarithmic scale: where the mesh
+// is graded, the grading shows.  Each vertex counts in the pixel it lies
+// in; a pixel is covered by the mesh when a vertex lies in it or a triangle
+// covers its centre.  A pixel's density is the vertices counted in the
+// square of 7 x 7 pixels around it over the pixels covered in that square;
+// pixels not covered (holes, the outside) are left blank.  The image is an
+// embedded PNG (png_image.hpp); the segments are drawn over it as
+// polylines through chains of segments, leaving out points closer than a
+// fraction of a pixel to the last one kept.
 //
 // Both end with a legend: the counts, the range of the mesh's angles, and
-// the colour scale.  Everything is computed in one pass over the triangles
-// in their order, on one thread, so the same mesh gives the same bytes.
+// the colour scale.  The density image is made of integer counts and
+// marks, which do not depend on the order they are taken in, and the angle
+// range of exact minima and maxima: the same mesh gives the same bytes.
 
 #include <algorithm>
 #include <array>
@@ -116,34 +117,29 @@ Colour region_colour(std::size_t rank) {
 
 std::string hex(const Colour& c) { return fmt::format("#{:02x}{:02x}{:02x}", c[0], c[1], c[2]); }
 
-// The smallest and largest angle of the mesh, kept as cotangents of the
-// angle opposite each triangle's shortest and longest edge (no
-// trigonometry per triangle): the smallest angle has the largest cotangent.
+// The smallest and largest angle of the mesh, kept as cotangents (no
+// trigonometry per triangle): the cotangent of a triangle's angle at a
+// corner is the dot product of the two edges there over their cross
+// product, twice the triangle's area, which is the same at every corner.
+// The smallest angle has the largest cotangent.
 struct AngleRange {
     double largest_cot = -std::numeric_limits<double>::infinity();  // of smallest angles
     double smallest_cot = std::numeric_limits<double>::infinity();  // of largest angles
-    void add(const double* a, const double* b, const double* c) {
-        const double* p[3] = {a, b, c};
-        double len[3];
-        for (int k = 0; k < 3; ++k) {
-            const double* u = p[(k + 1) % 3];
-            const double* v = p[(k + 2) % 3];
-            len[k] = (u[0] - v[0]) * (u[0] - v[0]) + (u[1] - v[1]) * (u[1] - v[1]);
-        }
-        const int shortest =
-            len[0] <= len[1] ? (len[0] <= len[2] ? 0 : 2) : (len[1] <= len[2] ? 1 : 2);
-        const int longest =
-            len[0] >= len[1] ? (len[0] >= len[2] ? 0 : 2) : (len[1] >= len[2] ? 1 : 2);
-        largest_cot = std::max(largest_cot, cot(p, shortest));
-        smallest_cot = std::min(smallest_cot, cot(p, longest));
-    }
-    static double cot(const double* const* p, int k) {
-        const double* o = p[k];
-        const double* u = p[(k + 1) % 3];
-        const double* v = p[(k + 2) % 3];
-        const double ux = u[0] - o[0], uy = u[1] - o[1], vx = v[0] - o[0], vy = v[1] - o[1];
-        const double cross = std::abs(ux * vy - uy * vx);
-        return cross > 0 ? (ux * vx + uy * vy) / cross : 0;
+    // Returns the square of the triangle's longest edge.
+    double add(const double* a, const double* b, const double* c) {
+        const double abx = b[0] - a[0], aby = b[1] - a[1];
+        const double bcx = c[0] - b[0], bcy = c[1] - b[1];
+        const double cax = a[0] - c[0], cay = a[1] - c[1];
+        const double at_a = -(abx * cax + aby * cay);
+        const double at_b = -(bcx * abx + bcy * aby);
+        const double at_c = -(cax * bcx + cay * bcy);
+        const double cross = std::abs(abx * cay - aby * cax);
+        // A degenerate triangle counts as right-angled, as a cotangent of 0.
+        const double most = cross > 0 ? std::max({at_a, at_b, at_c}) / cross : 0;
+        const double least = cross > 0 ? std::min({at_a, at_b, at_c}) / cross : 0;
+        largest_cot = std::max(largest_cot, most);
+        smallest_cot = std::min(smallest_cot, least);
+        return std::max({abx * abx + aby * aby, bcx * bcx + bcy * bcy, cax * cax + cay * cay});
     }
     static double degrees(double cot) { return std::atan2(1.0, cot) * 180 / std::numbers::pi; }
     bool empty() const { return largest_cot == -std::numeric_limits<double>::infinity(); }
@@ -320,15 +316,15 @@ void draw_triangles(File& file, const Frame& frame, const MeshExport& mesh, Angl
 
 // Replaces each value of the w x h image by the sum over the square of
 // (2 smoothing + 1) pixels around it (clipped at the edges): two passes of
-// running sums, rows then columns.
+// running sums, rows then columns.  Integers, so that the sums are exact.
 constexpr int smoothing = 3;
-void box_sum(std::vector<double>& image, std::uint32_t w, std::uint32_t h) {
-    std::vector<double> line;
+void box_sum(std::vector<std::uint32_t>& image, std::uint32_t w, std::uint32_t h) {
+    std::vector<std::uint32_t> line;
     const auto pass = [&](std::size_t count, std::size_t length, std::size_t step,
                           std::size_t stride) {
         line.resize(length + 1);
         for (std::size_t l = 0; l < count; ++l) {
-            double* p = image.data() + l * stride;
+            std::uint32_t* p = image.data() + l * stride;
             line[0] = 0;
             for (std::size_t i = 0; i < length; ++i) line[i + 1] = line[i] + p[i * step];
             for (std::size_t i = 0; i < length; ++i) {
@@ -342,120 +338,157 @@ void box_sum(std::vector<double>& image, std::uint32_t w, std::uint32_t h) {
     pass(w, h, w, 1);  // each column
 }
 
-// The large mesh: the density image.  Returns the density range, in
-// triangles per unit area of the mesh, of the pixels drawn.
-std::pair<double, double> draw_density(File& file, const Frame& frame, const MeshExport& mesh,
-                                       AngleRange& angles) {
+// What the density image is made of, per pixel: the vertices of the mesh
+// in it, and whether the mesh covers it (such a vertex lies in it or a
+// triangle covers its centre).  Counts and marks only: the image does not
+// depend on the order in which vertices and triangles are taken.
+//
+// A planar triangulation has about twice as many triangles as vertices, so
+// the vertices' density shows the triangles' and costs a sequential read of
+// the coordinates.  The triangles, read in any case for the angle range,
+// mark the vertices they use (a vertex in a hole, or a duplicate, belongs to
+// no triangle and is not drawn) and, where they are not much smaller than
+// a pixel, the pixel centres they cover.
+struct DensityCounts {
+    std::uint32_t w = 0, h = 0;
+    std::vector<std::uint32_t> vertices;
+    std::vector<std::uint8_t> covered;
+    std::vector<std::uint8_t> used;  // per vertex
+
+    DensityCounts(std::uint32_t width, std::uint32_t height, std::size_t vertex_count)
+        : w(width),
+          h(height),
+          vertices(std::size_t{w} * h, 0),
+          covered(std::size_t{w} * h, 0),
+          used(vertex_count, 0) {}
+
+    // Mesh coordinates -> pixels (x right, y down, from the drawing's
+    // corner: never negative).
+    static double px(const Frame& frame, double mx) { return (mx - frame.min_x) * frame.scale; }
+    static double py(const Frame& frame, double my) { return (frame.max_y - my) * frame.scale; }
+
+    // The vertices that the triangles use (after cover_triangles).
+    void count_vertices(const Frame& frame, const NodeSet& nodes) {
+        for (std::size_t v = 0; v < nodes.size(); ++v) {
+            if (used[v] == 0) continue;
+            const auto i = std::min(static_cast<std::uint32_t>(px(frame, nodes.xy[2 * v])), w - 1);
+            const auto j =
+                std::min(static_cast<std::uint32_t>(py(frame, nodes.xy[2 * v + 1])), h - 1);
+            const std::size_t at = std::size_t{j} * w + i;
+            ++vertices[at];
+            covered[at] = 1;
+        }
+    }
+
+    // One triangle, its corners in pixels: marks the pixel centres
+    // (i + 0.5, j + 0.5) it covers, edges included.  Its bounding box holds
+    // none, mostly, for a triangle smaller than a pixel.
+    void cover(const double* x, const double* y) {
+        const auto [i0, i1] =
+            centres(std::min({x[0], x[1], x[2]}), std::max({x[0], x[1], x[2]}), w);
+        if (i0 > i1) return;
+        const auto [j0, j1] =
+            centres(std::min({y[0], y[1], y[2]}), std::max({y[0], y[1], y[2]}), h);
+        if (j0 > j1) return;
+        // Twice the signed area; negative as y points down.
+        const double twice = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
+        if (twice == 0) return;
+        const double sign = twice > 0 ? 1 : -1;
+        for (std::int64_t j = j0; j <= j1; ++j) {
+            for (std::int64_t i = i0; i <= i1; ++i) {
+                const double cx = static_cast<double>(i) + 0.5, cy = static_cast<double>(j) + 0.5;
+                bool inside = true;
+                for (int k = 0; k < 3 && inside; ++k) {
+                    const int k1 = (k + 1) % 3;
+                    inside =
+                        sign * ((x[k1] - x[k]) * (cy - y[k]) - (y[k1] - y[k]) * (cx - x[k])) >= 0;
+                }
+                if (inside)
+                    covered[static_cast<std::size_t>(j) * w + static_cast<std::size_t>(i)] = 1;
+            }
+        }
+    }
+
+    // The k whose pixel centre k + 0.5 lies in [lo, hi] (0 <= lo <= hi),
+    // as the first and last, up to n - 1: floor(v + 0.5) is the number of
+    // centres up to v.
+    static std::pair<std::int64_t, std::int64_t> centres(double lo, double hi, std::uint32_t n) {
+        auto first = static_cast<std::int64_t>(lo + 0.5);
+        if (first > 0 && static_cast<double>(first) - 0.5 == lo) --first;  // a centre on lo
+        const auto last = static_cast<std::int64_t>(hi + 0.5) - 1;
+        return {first, std::min<std::int64_t>(last, std::int64_t{n} - 1)};
+    }
+};
+
+// The pass over the triangles: the angle range, the vertices used, and the
+// pixel centres that the triangles cover.  Only a triangle with an edge of half a pixel or
+// more is drawn: a pixel centre in a smaller one is closer than half a
+// pixel to each of its corners, which lie in that pixel then, and the
+// vertices have marked it.  The pass waits on memory: a triangle's corners
+// are anywhere in the vertex array.  So the triangles come in batches: the
+// corners of a whole batch are asked for ahead (prefetch), then each
+// triangle is taken.
+AngleRange cover_triangles(const Frame& frame, const MeshExport& mesh, DensityCounts& counts) {
     const NodeSet& nodes = *mesh.nodes;
-    const auto w = static_cast<std::uint32_t>(frame.width);
-    const auto h = static_cast<std::uint32_t>(frame.height);
-    // What each pixel received and the area it was covered by, side by side
-    // (one cache line for both: the pass is bound by memory, not arithmetic).
-    std::vector<std::array<double, 2>> sums(std::size_t{w} * h, {0.0, 0.0});
-    // The pixels the mesh touches: drawn, the others left blank.
-    std::vector<std::uint8_t> drawn(std::size_t{w} * h, 0);
-    const auto pixel = [w, h](double x, double y) {
-        const auto i = static_cast<std::uint32_t>(std::clamp(x, 0.0, w - 1.0));
-        const auto j = static_cast<std::uint32_t>(std::clamp(y, 0.0, h - 1.0));
-        return std::size_t{j} * w + i;
-    };
+    AngleRange angles;
+    const double half_pixel_squared = 0.25 / (frame.scale * frame.scale);  // in the mesh's units
     EleSource source = mesh.triangles();
     std::vector<double> attributes(source.attribute_count);
-    // The pass waits on memory: a triangle's corners are anywhere in the
-    // vertex array, and its pixel anywhere in the image.  So the triangles
-    // come in batches: the corners of a whole batch are fetched ahead
-    // (prefetch), then its centroid pixels, then each triangle is drawn, in
-    // order as before.
     constexpr std::size_t batch = 256;
     std::vector<std::uint32_t> corners(3 * batch);
-    std::vector<double> xs(3 * batch), ys(3 * batch);
-    std::vector<std::size_t> centroid_at(batch);
     std::uint32_t c[6];
     for (std::size_t first = 0; first < source.count; first += batch) {
         const std::size_t n = std::min(batch, source.count - first);
         for (std::size_t b = 0; b < n; ++b) {
             source.next(c, attributes.data());
             std::copy_n(c, 3, &corners[3 * b]);
-            for (int k = 0; k < 3; ++k) __builtin_prefetch(corner(nodes, c[k]));
+            for (int k = 0; k < 3; ++k) {
+                __builtin_prefetch(corner(nodes, c[k]));
+                counts.used[c[k]] = 1;
+            }
         }
         for (std::size_t b = 0; b < n; ++b) {
             const double* p[3] = {corner(nodes, corners[3 * b]), corner(nodes, corners[3 * b + 1]),
                                   corner(nodes, corners[3 * b + 2])};
-            angles.add(p[0], p[1], p[2]);
+            if (angles.add(p[0], p[1], p[2]) < half_pixel_squared) continue;
+            double x[3], y[3];
             for (int k = 0; k < 3; ++k) {
-                xs[3 * b + k] = frame.x(p[k][0]) - margin;
-                ys[3 * b + k] = frame.y(p[k][1]) - margin;
+                x[k] = DensityCounts::px(frame, p[k][0]);
+                y[k] = DensityCounts::py(frame, p[k][1]);
             }
-            centroid_at[b] = pixel((xs[3 * b] + xs[3 * b + 1] + xs[3 * b + 2]) / 3,
-                                   (ys[3 * b] + ys[3 * b + 1] + ys[3 * b + 2]) / 3);
-            __builtin_prefetch(&sums[centroid_at[b]], 1);
-        }
-        for (std::size_t b = 0; b < n; ++b) {
-            const double* x = &xs[3 * b];
-            const double* y = &ys[3 * b];
-            // Twice the signed area in pixels; negative as y points down.
-            const double twice = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
-            const double area = std::abs(twice) / 2;
-            // The pixels whose centres (i + 0.5, j + 0.5) lie in the bounding
-            // box: none, mostly, for a triangle smaller than a pixel.
-            const double lo_x = std::max(0.0, std::ceil(std::min({x[0], x[1], x[2]}) - 0.5));
-            const double hi_x = std::min(w - 1.0, std::floor(std::max({x[0], x[1], x[2]}) - 0.5));
-            const double lo_y = std::max(0.0, std::ceil(std::min({y[0], y[1], y[2]}) - 0.5));
-            const double hi_y = std::min(h - 1.0, std::floor(std::max({y[0], y[1], y[2]}) - 0.5));
-            // A triangle of a pixel or more spreads over the pixel centres it
-            // covers; a smaller one goes to its centroid's pixel whole (spread,
-            // it would weigh too much on one centre), and the centres it
-            // covers are only marked as drawn.
-            const bool spread = area >= 1;
-            bool hit = false;
-            if (twice != 0) {
-                const double sign = twice > 0 ? 1 : -1;
-                for (double j = lo_y; j <= hi_y; ++j) {
-                    for (double i = lo_x; i <= hi_x; ++i) {
-                        const double px = i + 0.5, py = j + 0.5;
-                        bool inside = true;
-                        for (int k = 0; k < 3 && inside; ++k) {
-                            const int k1 = (k + 1) % 3;
-                            const double e =
-                                (x[k1] - x[k]) * (py - y[k]) - (y[k1] - y[k]) * (px - x[k]);
-                            inside = sign * e >= 0;
-                        }
-                        if (!inside) continue;
-                        const std::size_t at =
-                            static_cast<std::size_t>(j) * w + static_cast<std::size_t>(i);
-                        drawn[at] = 1;
-                        if (!spread) continue;
-                        sums[at][0] += 1 / area;
-                        sums[at][1] += 1;
-                        hit = true;
-                    }
-                }
-            }
-            if (!hit) {
-                const std::size_t at = centroid_at[b];
-                sums[at][0] += 1;
-                sums[at][1] += area;
-                drawn[at] = 1;
-            }
+            counts.cover(x, y);
         }
     }
-    // One triangle per pixel is noise: the density shown is that of the
-    // square of (2 smoothing + 1) pixels around each (both sums over it).
-    std::vector<double> received(sums.size()), covered(sums.size());
-    for (std::size_t i = 0; i < sums.size(); ++i) {
-        received[i] = sums[i][0];
-        covered[i] = sums[i][1];
-    }
-    sums = {};
+    return angles;
+}
+
+// The large mesh: the density image.  Returns the density range, in
+// vertices per unit area of the mesh, of the pixels drawn.
+std::pair<double, double> draw_density(File& file, const Frame& frame, const MeshExport& mesh,
+                                       AngleRange& angles) {
+    const auto w = static_cast<std::uint32_t>(frame.width);
+    const auto h = static_cast<std::uint32_t>(frame.height);
+    DensityCounts counts(w, h, mesh.nodes->size());
+    angles = cover_triangles(frame, mesh, counts);
+    counts.count_vertices(frame, *mesh.nodes);
+    // A few vertices per pixel are noise: the density shown is that of the
+    // square of (2 smoothing + 1) pixels around each, the vertices in it
+    // over the pixels covered in it.  Inside triangles larger than the
+    // square, it may hold none: it is then shown as holding one, the least
+    // density the square can tell.
+    std::vector<std::uint32_t> received = std::move(counts.vertices);
+    std::vector<std::uint32_t> area(counts.covered.begin(), counts.covered.end());
     box_sum(received, w, h);
-    box_sum(covered, w, h);
+    box_sum(area, w, h);
+    std::vector<double> density(received.size(), 0.0);
+    const std::vector<std::uint8_t>& drawn = counts.covered;
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (std::size_t i = 0; i < received.size(); ++i) {
-        drawn[i] = drawn[i] != 0 && covered[i] > 0 && received[i] > 0;
-        if (drawn[i] == 0) continue;
-        received[i] = std::log10(received[i] / covered[i]);  // per square pixel
-        lo = std::min(lo, received[i]);
-        hi = std::max(hi, received[i]);
+        if (drawn[i] == 0) continue;  // (then area[i] > 0)
+        const double vertices = std::max<std::uint32_t>(received[i], 1);
+        density[i] = std::log10(vertices / area[i]);  // per square pixel
+        lo = std::min(lo, density[i]);
+        hi = std::max(hi, density[i]);
     }
     // At least a factor of 10 from one end of the scale to the other, so
     // that a uniform mesh looks uniform rather than its small variations
@@ -468,7 +501,7 @@ std::pair<double, double> draw_density(File& file, const Frame& frame, const Mes
     std::vector<std::uint8_t> image(received.size(), 0);
     for (std::size_t i = 0; i < received.size(); ++i) {
         if (drawn[i] == 0) continue;
-        const double f = hi > lo ? (received[i] - lo) / (hi - lo) : 0.5;
+        const double f = hi > lo ? (density[i] - lo) / (hi - lo) : 0.5;
         image[i] = static_cast<std::uint8_t>(1 + std::lround(f * 254));
     }
     std::vector<Colour> palette(256);
@@ -520,7 +553,8 @@ void write_svg(OutputTransaction& tx, const std::string& path, const MeshExport&
     Out out(file.buffer());
     put_counts(out, mesh, segments.size(), angles, legend_top);
     if (!small) {
-        put_ramp_bar(out, legend_top, "triangles per unit area (too many to draw one by one)",
+        put_ramp_bar(out, legend_top,
+                     "vertices per unit area (too many triangles to draw one by one)",
                      fmt::format("{:.3g}", density.first), fmt::format("{:.3g}", density.second));
     } else if (regions.size() > 1) {
         double x = margin;

@@ -381,9 +381,12 @@ void expect_counts(Quadtree& tree, std::uint32_t i, CellRecord record,
 }
 
 // Relation (9), with effective sides, for every leaf the circumdisk of
-// triangle i meets.  `stack` is scratch.
+// triangle i meets.  A triangle larger than the root allows is exempt: it
+// is counted at the root, and the scheduler then hands out one leaf at a
+// time (cell_record's outgrew_root).  `stack` is scratch.
 void check_relation_9(const Quadtree& tree, std::uint32_t i, const geometry::Circle& c,
                       std::vector<NodeId>& stack, QuadtreeProblems& problems) {
+    if (tree.level_of(c.radius_squared) < 0) return;
     const double r = std::sqrt(c.radius_squared);
     stack.assign(1, Quadtree::root());
     while (!stack.empty()) {

@@ -49,8 +49,8 @@ void run_lane(Worker& lane, unsigned l, unsigned lanes, Round& round, std::mutex
         RunResult& result = round.results[i];
         const std::uint64_t before = lane.report.triangles_created;
         try {
-            result.split = lane.run(round.leaves[i], static_cast<std::int32_t>(i + 1),
-                                    result.balance);
+            result.split =
+                lane.run(round.leaves[i], static_cast<std::int32_t>(i + 1), result.balance);
         } catch (...) {
             std::lock_guard lock(mutex);
             if (!failure) failure = std::current_exception();
@@ -132,7 +132,8 @@ private:
                 std::unique_lock lock(mutex_);
                 // A helper takes part in a round only while fewer than
                 // `wanted_` have joined it.
-                start_.wait(lock, [&] { return quit_ || (generation_ != seen && joined_ < wanted_); });
+                start_.wait(lock,
+                            [&] { return quit_ || (generation_ != seen && joined_ < wanted_); });
                 times_[thread].waiting += seconds(t0, Clock::now());
                 if (quit_) return;
                 ++joined_;
@@ -163,9 +164,9 @@ private:
 
 }  // namespace
 
-void run_rounds(std::vector<std::unique_ptr<Worker>>& lanes, Scheduler& scheduler,
-                unsigned threads, const ParallelOptions& options, ParallelReport& report,
-                std::exception_ptr& failure, const std::function<void()>& check) {
+void run_rounds(std::vector<std::unique_ptr<Worker>>& lanes, Scheduler& scheduler, unsigned threads,
+                const ParallelOptions& options, ParallelReport& report, std::exception_ptr& failure,
+                const std::function<void()>& check) {
     const auto lane_total = static_cast<unsigned>(lanes.size());
     LaneThreads pool(lanes, std::min(threads, lane_total) - 1, failure, report.workers);
     Round round;
@@ -221,8 +222,7 @@ ScheduleShape schedule_shape(const std::vector<std::vector<std::uint64_t>>& roun
     return s;
 }
 
-double predicted_speedup(const std::vector<std::vector<std::uint64_t>>& rounds,
-                         unsigned workers) {
+double predicted_speedup(const std::vector<std::vector<std::uint64_t>>& rounds, unsigned workers) {
     double work = 0, time = 0;
     for (const auto& r : rounds) {
         double sum = 0, largest = 0;

@@ -46,17 +46,17 @@ inline constexpr unsigned lane_count = 64;
 // exception goes to `failure`), on `threads` threads: the calling thread and
 // threads - 1 more.  `check` runs after each round in checked mode.
 // Records each round's leaves' work in report.rounds.
-void run_rounds(std::vector<std::unique_ptr<Worker>>& lanes, Scheduler& scheduler,
-                unsigned threads, const ParallelOptions& options, ParallelReport& report,
-                std::exception_ptr& failure, const std::function<void()>& check);
+void run_rounds(std::vector<std::unique_ptr<Worker>>& lanes, Scheduler& scheduler, unsigned threads,
+                const ParallelOptions& options, ParallelReport& report, std::exception_ptr& failure,
+                const std::function<void()>& check);
 
 // What the recorded rounds say of the schedule's parallelism, counting a
 // leaf's work as the triangles its run created (deterministic, unlike time).
 struct ScheduleShape {
     std::uint64_t rounds = 0;
-    std::uint64_t runs = 0;  // leaves refined, over all rounds
+    std::uint64_t runs = 0;                          // leaves refined, over all rounds
     std::uint64_t fewest = 0, median = 0, most = 0;  // leaves per round
-    std::uint64_t work = 0;  // every run's work
+    std::uint64_t work = 0;                          // every run's work
     std::uint64_t span = 0;  // the sum over rounds of the round's largest run
     // Work / span: the most any number of workers could speed the rounds up.
     double parallelism() const { return span == 0 ? 0.0 : double(work) / double(span); }

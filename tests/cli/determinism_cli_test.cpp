@@ -85,8 +85,9 @@ TEST_CASE("a triunsuitable() plug-in's mesh is the same on any number of threads
     for (const char* threads : {"-j2", "-j5"}) {
         TempDir dir;
         fs::copy_file(project_samples() / "pipe.poly", dir / "pipe.poly");
-        const RunResult result = run_gpdr(
-            dir, std::string("-Qpq20 ") + threads + " --unsuitable '" + plugin.string() + "' pipe.poly");
+        const RunResult result =
+            run_gpdr(dir, std::string("-Qpq20 ") + threads + " --unsuitable '" + plugin.string() +
+                              "' pipe.poly");
         INFO(result.err);
         REQUIRE(result.status == 0);
         const std::string ele = dir.read("pipe.1.ele") + dir.read("pipe.1.node");

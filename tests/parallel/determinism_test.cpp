@@ -15,17 +15,12 @@
 #include <vector>
 
 #include "mesh/traverse.hpp"
+#include "parallel/parallel_support.hpp"
 #include "parallel/refine_parallel.hpp"
 #include "parallel/rounds.hpp"
 #include "refine/refine_support.hpp"
 
 namespace gpdr::parallel::testing {
-
-using refine::testing::cdt;
-using refine::testing::examine;
-using refine::testing::joined;
-using refine::testing::point_set_mesh;
-using refine::testing::random_points;
 
 namespace {
 
@@ -65,41 +60,6 @@ std::string snapshot(const mesh::Mesh& m) {
     return bytes;
 }
 
-refine::RefineSettings settings_for(double angle, double area) {
-    refine::RefineSettings s;
-    s.criteria.min_angle_degrees = angle;
-    s.criteria.max_area = area;
-    s.checked = true;
-    return s;
-}
-
-// A square with a square hole and an acute notch (small input angle).
-triangulate::Pslg notched_square() {
-    triangulate::Pslg p;
-    p.points = {{0, 0}, {4, 0},   {4, 4},     {2.2, 4}, {2, 1.5}, {1.8, 4},
-                {0, 4}, {1, 2.5}, {1.5, 2.5}, {1.5, 3}, {1, 3}};
-    p.segments = {0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 0, 7, 8, 8, 9, 9, 10, 10, 7};
-    p.holes = {{1.25, 2.75}};
-    return p;
-}
-
-// A random polygon with random interior points.
-triangulate::Pslg random_pslg(std::uint32_t seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    triangulate::Pslg p;
-    const int n = 5 + static_cast<int>(rng() % 12);
-    for (int i = 0; i < n; ++i) {
-        const double a = 2 * 3.141592653589793 * (i + 0.8 * u(rng)) / n;
-        const double r = 0.5 + 0.5 * u(rng);
-        p.points.push_back({r * std::cos(a), r * std::sin(a)});
-        p.segments.push_back(static_cast<std::uint32_t>(i));
-        p.segments.push_back(static_cast<std::uint32_t>((i + 1) % n));
-    }
-    for (int i = 0; i < 10; ++i) p.points.push_back({0.4 * (u(rng) - 0.5), 0.4 * (u(rng) - 0.5)});
-    return p;
-}
-
 // triunsuitable() of a graded mesh: triangles must be smaller near (0, 0)
 // (the graded pipe's grading, in miniature).  Pure, so thread-safe.
 int graded(double* a, double* b, double* c, double area) {
@@ -121,8 +81,8 @@ std::vector<Case> cases() {
     c.push_back({"notched square -a alone", notched_square(), settings_for(0, 5e-4)});
     c.push_back({"notched square -q20 -a -g2", notched_square(), settings_for(20, 3e-4), 2});
     for (std::uint32_t seed : {1u, 2u, 3u})
-        c.push_back({"random PSLG " + std::to_string(seed), random_pslg(seed),
-                     settings_for(25, 2e-3)});
+        c.push_back(
+            {"random PSLG " + std::to_string(seed), random_pslg(seed), settings_for(25, 2e-3)});
     Case user{"random PSLG 4, graded by -u", random_pslg(4), settings_for(20, 0)};
     user.settings.criteria.user_test = graded;
     c.push_back(user);

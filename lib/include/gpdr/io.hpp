@@ -124,6 +124,8 @@ private:
 // killed run leaves no hidden temporary behind.
 void remove_temporary_files() noexcept;
 
+class FormatThreads;  // threads that format pieces of a file's lines (internal)
+
 // What every writer needs besides the data.
 struct WriteFormat {
     int base = 1;         // number entries from 0 or 1
@@ -133,6 +135,10 @@ struct WriteFormat {
     // " (run <stamp>)" when `stamp` is not empty.
     std::string command;
     std::string stamp = {};
+    // Threads shared by the writers of one output stage (write_outputs),
+    // which format a large file's lines in pieces, written in order: the
+    // bytes do not change.  Null: each file is formatted by its writer.
+    FormatThreads* threads = nullptr;
 };
 
 void write_node(OutputTransaction& out, const std::string& path, const NodeSet& nodes,

@@ -11,8 +11,10 @@
 // file reads back as it was written.
 
 #include <algorithm>
+#include <cstring>
 #include <iterator>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include <fmt/compile.h>
@@ -35,14 +37,30 @@ std::uint64_t numbered(std::size_t i, int base) { return static_cast<std::uint64
 std::uint64_t numbered_index(std::uint32_t i, int base) { return std::uint64_t{i} + base; }
 
 // An integer right-aligned in `width` columns: the bytes of fmt's "{:4}"
-// for width 4, written from fmt::format_int's digits.  The formatter that a
-// width goes through costs several times the digits themselves, and the
-// .ele file is mostly such columns.
+// for width 4.  fmt's formatter parses the width on every call and costs
+// several times the digits themselves, and the .ele file is mostly such
+// columns.
 template <class Int>
 void put_int(fmt::memory_buffer& text, Int value, std::size_t width = 4) {
-    const fmt::format_int digits(value);
-    for (std::size_t k = digits.size(); k < width; ++k) text.push_back(' ');
-    text.append(digits.data(), digits.data() + digits.size());
+    using Unsigned = std::make_unsigned_t<Int>;
+    bool negative = false;
+    if constexpr (std::is_signed_v<Int>) negative = value < 0;
+    Unsigned u =
+        negative ? Unsigned(0) - static_cast<Unsigned>(value) : static_cast<Unsigned>(value);
+    char digits[24];
+    char* const end = digits + sizeof digits;
+    char* p = end;
+    do {
+        *--p = static_cast<char>('0' + u % 10);
+        u /= 10;
+    } while (u != 0);
+    if (negative) *--p = '-';
+    const auto n = static_cast<std::size_t>(end - p);
+    const std::size_t pad = n < width ? width - n : 0;
+    const std::size_t at = text.size();
+    text.resize(at + pad + n);
+    std::memset(text.data() + at, ' ', pad);
+    std::memcpy(text.data() + at + pad, p, n);
 }
 
 // Literal text between the columns.

@@ -170,8 +170,7 @@ TEST_CASE("every writer gives one thread's bytes on any number of threads", "[pa
     }
 }
 
-TEST_CASE("a triangle source read in order is written in order on several threads",
-          "[parallel]") {
+TEST_CASE("a triangle source read in order is written in order on several threads", "[parallel]") {
     std::mt19937_64 rng(7);
     const EleSet ele = triangles_of(many, 3, 2, 1000000, rng);
     const auto from_source = [&ele](io::OutputTransaction& tx, const std::string& path,
@@ -224,5 +223,32 @@ TEST_CASE("a failure while formatting on several threads reaches the writer", "[
                           "source failed");
         // The transactions were destroyed without a commit: nothing is left.
         CHECK(dir.files().empty());
+    }
+}
+
+TEST_CASE("segment columns are fmt's, negative markers and wide numbers included", "[parallel]") {
+    std::mt19937_64 rng(5);
+    PolyFile poly;
+    poly.nodes_from_node_file = true;
+    poly.nodes.markers.assign(1, 0);
+    const std::size_t n = 2 * io::detail::lines_per_piece + 3;
+    for (std::size_t s = 0; s < n; ++s) {
+        poly.segments.endpoints.push_back(static_cast<std::uint32_t>(rng() % 3000000));
+        poly.segments.endpoints.push_back(static_cast<std::uint32_t>(rng() % 30));
+        poly.segments.markers.push_back(static_cast<int>(rng() % 200001) - 100000);
+    }
+    const Write write = [&](io::OutputTransaction& tx, const std::string& path,
+                            const io::WriteFormat& f) { io::write_poly(tx, path, poly, f); };
+    std::string expected = fmt::format("0  2  0  1\n{}  1\n", n);
+    for (std::size_t s = 0; s < n; ++s)
+        expected += fmt::format("{:4}    {:4}  {:4}    {:4}\n", s, poly.segments.endpoints[2 * s],
+                                poly.segments.endpoints[2 * s + 1], poly.segments.markers[s]);
+    expected += "0\n";
+    for (const unsigned threads : {1u, 2u}) {
+        TempDir dir;
+        write_files(dir, threads, {{"m.poly", write}}, 0);
+        const std::string text = dir.read("m.poly");
+        REQUIRE(text.size() > expected.size());
+        CHECK(text.substr(0, expected.size()) == expected);
     }
 }

@@ -14,9 +14,9 @@ namespace gpdr::io {
 // stack, listed in jobs_ until no other thread can reach it.
 struct FormatThreads::Job {
     const Pieces* pieces = nullptr;
-    std::size_t claimed = 0;    // pieces handed out (the next one to claim)
-    std::size_t written = 0;    // pieces appended to the file
-    std::size_t in_flight = 0;  // pieces being formatted now
+    std::size_t claimed = 0;               // pieces handed out (the next one to claim)
+    std::size_t written = 0;               // pieces appended to the file
+    std::size_t in_flight = 0;             // pieces being formatted now
     std::vector<fmt::memory_buffer> text;  // per slot: a piece's text
     std::vector<char> done;                // per slot: formatted, not yet written
     std::exception_ptr failure;

@@ -209,8 +209,9 @@ void write_ele(OutputTransaction& tx, const std::string& path, const EleSource& 
             file.flush_if_full();
         }
     } else {
-        // The source reads in order only: each piece's triangles are read
-        // into its slot when it is claimed, then formatted on any thread.
+        // Each piece's triangles are read into its slot, then formatted, on
+        // any thread; a source that reads in order only is read when the
+        // piece is claimed, pieces being claimed in order.
         constexpr std::size_t per_piece = detail::lines_per_piece;
         std::vector<std::vector<std::uint32_t>> corners(threads->window());
         std::vector<std::vector<double>> attributes(threads->window());
@@ -219,14 +220,20 @@ void write_ele(OutputTransaction& tx, const std::string& path, const EleSource& 
         const auto lines = [n](std::size_t piece) {
             return std::min(n, (piece + 1) * per_piece) - piece * per_piece;
         };
-        pieces.prepare = [&](std::size_t piece, std::size_t slot) {
+        const auto read = [&](std::size_t piece, std::size_t slot) {
             const std::size_t k = lines(piece);
             corners[slot].resize(k * nc);
             attributes[slot].resize(k * na);
+            if (source.read) {
+                source.read(piece * per_piece, k, corners[slot].data(), attributes[slot].data());
+                return;
+            }
             for (std::size_t i = 0; i < k; ++i)
                 source.next(&corners[slot][i * nc], attributes[slot].data() + i * na);
         };
+        if (!source.read) pieces.prepare = read;
         pieces.format = [&](std::size_t piece, std::size_t slot, fmt::memory_buffer& text) {
+            if (source.read) read(piece, slot);
             for (std::size_t i = 0; i < lines(piece); ++i)
                 put_triangle(piece * per_piece + i, &corners[slot][i * nc],
                              attributes[slot].data() + i * na, text);

@@ -165,6 +165,13 @@ struct EleSource {
     std::uint32_t corners_per_triangle = 3;
     std::uint32_t attribute_count = 0;
     std::function<void(std::uint32_t* corners, double* attributes)> next;
+    // Optional: fills the corners and attributes of triangles first to
+    // first + n - 1, like n calls of next() from there, without touching
+    // next()'s place; callable from several threads at once.  With it a
+    // large file's triangles are read on the threads that format them.
+    std::function<void(std::size_t first, std::size_t n, std::uint32_t* corners,
+                       double* attributes)>
+        read = {};
 };
 void write_ele(OutputTransaction& out, const std::string& path, const EleSource& triangles,
                const WriteFormat& format);

@@ -62,8 +62,9 @@ TEST_CASE("a streamed mesh's triangles are read in runs as in order", "[stream]"
     CHECK(expected.corners == in_order(api::triangle_source(copied)).corners);
 
     // Runs starting anywhere, of any length, the last one to the end.
-    for (const auto& [first, length] : std::vector<std::pair<std::size_t, std::size_t>>{
-             {0, 1}, {0, n}, {1, 4096}, {4095, 2}, {4096, 4096}, {5000, 9000}, {n - 1, 1}, {n, 0}}) {
+    const std::vector<std::pair<std::size_t, std::size_t>> runs{
+        {0, 1}, {0, n}, {1, 4096}, {4095, 2}, {4096, 4096}, {5000, 9000}, {n - 1, 1}, {n, 0}};
+    for (const auto& [first, length] : runs) {
         INFO(first << " + " << length);
         Read r;
         r.corners.resize(3 * length);

@@ -11,6 +11,7 @@
 // file reads back as it was written.
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <iterator>
 #include <string_view>
@@ -36,36 +37,69 @@ using detail::put_lines;
 std::uint64_t numbered(std::size_t i, int base) { return static_cast<std::uint64_t>(i) + base; }
 std::uint64_t numbered_index(std::uint32_t i, int base) { return std::uint64_t{i} + base; }
 
-// An integer right-aligned in `width` columns: the bytes of fmt's "{:4}"
-// for width 4.  fmt's formatter parses the width on every call and costs
-// several times the digits themselves, and the .ele file is mostly such
-// columns.
-template <class Int>
-void put_int(fmt::memory_buffer& text, Int value, std::size_t width = 4) {
-    using Unsigned = std::make_unsigned_t<Int>;
-    bool negative = false;
-    if constexpr (std::is_signed_v<Int>) negative = value < 0;
-    Unsigned u =
-        negative ? Unsigned(0) - static_cast<Unsigned>(value) : static_cast<Unsigned>(value);
-    char digits[24];
-    char* const end = digits + sizeof digits;
-    char* p = end;
-    do {
-        *--p = static_cast<char>('0' + u % 10);
-        u /= 10;
-    } while (u != 0);
-    if (negative) *--p = '-';
-    const auto n = static_cast<std::size_t>(end - p);
-    const std::size_t pad = n < width ? width - n : 0;
-    const std::size_t at = text.size();
-    text.resize(at + pad + n);
-    std::memset(text.data() + at, ' ', pad);
-    std::memcpy(text.data() + at + pad, p, n);
-}
+// One line's integer columns and the blanks between them, built in a local
+// array and appended to the text at once.  A column is right-aligned in
+// `width` characters: the bytes of fmt's "{:4}" for width 4.  fmt parses
+// the width on every call, and appending each piece to the buffer on its
+// own costs more than the digits; the .ele file is mostly such columns.
+class Columns {
+    // "00" to "99".
+    static constexpr auto pairs = [] {
+        std::array<char, 200> table{};
+        for (int i = 0; i < 100; ++i) {
+            table[2 * i] = static_cast<char>('0' + i / 10);
+            table[2 * i + 1] = static_cast<char>('0' + i % 10);
+        }
+        return table;
+    }();
 
-// Literal text between the columns.
-void put(fmt::memory_buffer& text, std::string_view literal) {
-    text.append(literal.data(), literal.data() + literal.size());
+public:
+    template <class Int>
+    Columns& number(Int value, std::size_t width = 4) {
+        using Unsigned = std::make_unsigned_t<Int>;
+        bool negative = false;
+        if constexpr (std::is_signed_v<Int>) negative = value < 0;
+        Unsigned u =
+            negative ? Unsigned(0) - static_cast<Unsigned>(value) : static_cast<Unsigned>(value);
+        // The length: a sign, two digits per pair below the leading one.
+        std::size_t n = negative ? 1 : 0;
+        Unsigned lead = u;
+        for (; lead >= 100; lead /= 100) n += 2;
+        n += lead >= 10 ? 2 : 1;
+        for (; n < width; --width) *end_++ = ' ';
+        char* p = end_ += n;
+        // Two digits at a time, from a table of the hundred pairs.
+        for (; u >= 100; u /= 100) {
+            p -= 2;
+            std::memcpy(p, &pairs[2 * (u % 100)], 2);
+        }
+        if (u >= 10) {
+            p -= 2;
+            std::memcpy(p, &pairs[2 * u], 2);
+        } else {
+            *--p = static_cast<char>('0' + u);
+        }
+        if (negative) *--p = '-';
+        return *this;
+    }
+    template <std::size_t N>
+    Columns& blanks(const char (&literal)[N]) {
+        std::memcpy(end_, literal, N - 1);
+        end_ += N - 1;
+        return *this;
+    }
+    void append_to(fmt::memory_buffer& text) const { text.append(line_, end_); }
+
+private:
+    // Room for seven 64-bit numbers and their blanks.
+    char line_[224];
+    char* end_ = line_;
+};
+
+// A single column (an index before formatted reals).
+template <class Int>
+void put_int(fmt::memory_buffer& text, Int value) {
+    Columns().number(value).append_to(text);
 }
 
 void check_sizes(bool ok, const std::string& path, const char* what) {
@@ -131,16 +165,14 @@ void write_poly(OutputTransaction& tx, const std::string& path, const PolyFile& 
     const bool markers = format.markers && segs.has_markers();
     fmt::format_to(out, FMT_COMPILE("{}  {}\n"), segs.size(), markers ? 1 : 0);
     put_lines(file, format.threads, segs.size(), [&](std::size_t s, fmt::memory_buffer& text) {
-        put_int(text, numbered(s, format.base));
-        put(text, "    ");
-        put_int(text, numbered_index(segs.endpoints[2 * s], format.base));
-        put(text, "  ");
-        put_int(text, numbered_index(segs.endpoints[2 * s + 1], format.base));
-        if (markers) {
-            put(text, "    ");
-            put_int(text, segs.markers[s]);
-        }
-        text.push_back('\n');
+        Columns line;
+        line.number(numbered(s, format.base))
+            .blanks("    ")
+            .number(numbered_index(segs.endpoints[2 * s], format.base))
+            .blanks("  ")
+            .number(numbered_index(segs.endpoints[2 * s + 1], format.base));
+        if (markers) line.blanks("    ").number(segs.markers[s]);
+        line.blanks("\n").append_to(text);
     });
     const std::size_t holes = poly.holes.size() / 2;
     fmt::format_to(out, FMT_COMPILE("{}\n"), holes);
@@ -188,15 +220,17 @@ void write_ele(OutputTransaction& tx, const std::string& path, const EleSource& 
     // Triangle t's line, from its corners and attributes.
     const auto put_triangle = [&](std::size_t t, const std::uint32_t* c, const double* attributes,
                                   fmt::memory_buffer& text) {
-        put_int(text, numbered(t, base));
-        put(text, "  ");
-        for (std::uint32_t k = 0; k < nc; ++k) {
-            put(text, "  ");
-            put_int(text, numbered_index(c[k], base));
+        Columns line;
+        line.number(numbered(t, base)).blanks("  ");
+        for (std::uint32_t k = 0; k < nc; ++k) line.blanks("  ").number(numbered_index(c[k], base));
+        if (na == 0) {
+            line.blanks("\n").append_to(text);
+            return;
         }
-        Out line(text);
+        line.append_to(text);
+        Out out(text);
         for (std::uint32_t a = 0; a < na; ++a)
-            fmt::format_to(line, FMT_COMPILE("  {}"), attributes[a]);
+            fmt::format_to(out, FMT_COMPILE("  {}"), attributes[a]);
         text.push_back('\n');
     };
     FormatThreads* const threads = format.threads;
@@ -314,13 +348,15 @@ void write_off(OutputTransaction& tx, const std::string& path, const NodeSet& no
     // are drawn by their corners.
     put_lines(file, format.threads, ele.size(), [&](std::size_t t, fmt::memory_buffer& text) {
         const std::uint32_t* c = &ele.corners[t * nc];
-        put(text, " 3   ");
-        put_int(text, c[0]);
-        put(text, "  ");
-        put_int(text, c[1]);
-        put(text, "  ");
-        put_int(text, c[2]);
-        text.push_back('\n');
+        Columns()
+            .blanks(" 3   ")
+            .number(c[0])
+            .blanks("  ")
+            .number(c[1])
+            .blanks("  ")
+            .number(c[2])
+            .blanks("\n")
+            .append_to(text);
     });
     file.finish(format.command, format.stamp);
 }

@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <atomic>
+#include <climits>
 #include <functional>
 #include <random>
 #include <stdexcept>
@@ -232,10 +233,20 @@ TEST_CASE("segment columns are fmt's, negative markers and wide numbers included
     poly.nodes_from_node_file = true;
     poly.nodes.markers.assign(1, 0);
     const std::size_t n = 2 * io::detail::lines_per_piece + 3;
+    // Every length of number, both signs, the extremes; then random ones.
+    const std::vector<std::uint32_t> ends{0,      9,       10,       99,        100,
+                                          999,    1000,    9999,     10000,     99999,
+                                          100000, 1234567, 99999999, 100000000, 4294967295u};
+    const std::vector<int> markers{0,     -1,     9,       -9,      10,      -10,
+                                   99,    -99,    100,     -100,    999,     -999,
+                                   1000,  -1000,  9999,    -9999,   10000,   -10000,
+                                   12345, -12345, INT_MAX, INT_MIN, INT_MAX, INT_MIN + 1};
     for (std::size_t s = 0; s < n; ++s) {
-        poly.segments.endpoints.push_back(static_cast<std::uint32_t>(rng() % 3000000));
+        poly.segments.endpoints.push_back(
+            s < ends.size() ? ends[s] : static_cast<std::uint32_t>(rng() % 3000000));
         poly.segments.endpoints.push_back(static_cast<std::uint32_t>(rng() % 30));
-        poly.segments.markers.push_back(static_cast<int>(rng() % 200001) - 100000);
+        poly.segments.markers.push_back(
+            s < markers.size() ? markers[s] : static_cast<int>(rng() % 200001) - 100000);
     }
     const Write write = [&](io::OutputTransaction& tx, const std::string& path,
                             const io::WriteFormat& f) { io::write_poly(tx, path, poly, f); };

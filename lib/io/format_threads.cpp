@@ -27,7 +27,7 @@ struct FormatThreads::Job {
 };
 
 FormatThreads::FormatThreads(unsigned threads)
-    : threads_(std::max(1u, threads)), window_(2 * std::size_t{threads_} + 2) {}
+    : threads_(std::max(1u, threads)), window_(std::size_t{threads_} + 2) {}
 
 void FormatThreads::file_done() {
     const std::lock_guard lock(mutex_);

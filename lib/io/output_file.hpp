@@ -45,9 +45,15 @@ public:
     void finish(std::string_view command, std::string_view stamp = {},
                 Closing closing = Closing::hash_line);
 
-    // Raw bytes, for the binary parts of a file (in pieces of at most a few
-    // MiB, so that the buffer stays bounded).
+    // Raw bytes: the binary parts of a file, or a piece of text formatted
+    // elsewhere (in pieces of at most a few MiB).  What is buffered goes
+    // out first when the piece would take the buffer past its threshold, so
+    // that the buffer never grows beyond the size it was reserved at.
     void append(const void* data, std::size_t size) {
+        if (buffer_.size() + size > flush_threshold) {
+            flush();
+            start_writeback();
+        }
         const char* p = static_cast<const char*>(data);
         buffer_.append(p, p + size);
         flush_if_full();

@@ -25,8 +25,8 @@ std::string without_last_line(const std::string& text) {
 }
 
 struct Case {
-    std::string sample;  // under tests/data
-    std::string mesh;    // switches that make the mesh, on one thread
+    std::string sample;                // under tests/data
+    std::string mesh;                  // switches that make the mesh, on one thread
     std::vector<std::string> rewrite;  // switch sets that read it back and write it
 };
 

@@ -24,9 +24,9 @@
 #
 # ROUNDS=N runs the whole table N times (the rows of a round one after the
 # other, so that every round meets the machine in the same mood) and ends
-# with each row's refinement time as a ratio to -j1's and to Triangle's of
-# the same round, every round and the median: on a noisy machine one run
-# proves little either way.
+# with each row's refinement time, then its total (wall) time, as a ratio
+# to -j1's and to Triangle's of the same round, every round and the
+# median: on a noisy machine one run proves little either way.
 set -euo pipefail
 source "$(dirname "$0")/bench-common.sh"
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -43,14 +43,14 @@ rounds=${ROUNDS:-1}
 rows="$BENCH_DIR/graded-rows.txt"
 : >"$rows"
 # row ROUND LABEL PROGRAM SWITCHES [ARG ...]: one table row, also kept as
-# "round<TAB>label<TAB>refine seconds" for the ratios.
+# "round<TAB>label<TAB>refine seconds<TAB>total seconds" for the ratios.
 row() {
   local round=$1 label=$2
   shift 2
   local line
   line=$(bench_run "$label" "$@")
   echo "$line"
-  printf '%s\t%s\t%s\n' "$round" "$label" "$(echo "$line" | awk -F'|' '{ gsub(/ /, "", $8); print $8 }')" >>"$rows"
+  printf '%s\t%s\t%s\n' "$round" "$label" "$(echo "$line" | awk -F'|' '{ gsub(/ /, ""); print $8 "\t" $10 }')" >>"$rows"
 }
 
 echo "Graded $(basename "$input"), -q20, c = $c"
@@ -72,11 +72,11 @@ for round in $(seq "$rounds"); do
   fi
 done
 
-# Refinement ratios, round by round, and their medians.
-echo
-echo "Refinement time as a ratio to gpdr -j1's (and to Triangle's) of the same round:"
-awk -F'\t' '
-  { t[$1, $2] = $3; if (!($2 in seen)) { seen[$2] = 1; order[++n] = $2 } if ($1 > r) r = $1 }
+# Ratios of column COLUMN of the rows (3: refinement, 4: total), round by
+# round, and their medians.
+ratios() {
+awk -v column="$1" -F'\t' '
+  { t[$1, $2] = $column; if (!($2 in seen)) { seen[$2] = 1; order[++n] = $2 } if ($1 > r) r = $1 }
   function median(a, k,   i, j, x) {
     for (i = 2; i <= k; i++) { x = a[i]; for (j = i - 1; j >= 1 && a[j] > x; j--) a[j + 1] = a[j]; a[j + 1] = x }
     return k % 2 ? a[(k + 1) / 2] : (a[k / 2] + a[k / 2 + 1]) / 2
@@ -99,3 +99,10 @@ awk -F'\t' '
       print line
     }
   }' "$rows"
+}
+echo
+echo "Refinement time as a ratio to gpdr -j1's (and to Triangle's) of the same round:"
+ratios 3
+echo
+echo "Total time as a ratio to gpdr -j1's (and to Triangle's) of the same round:"
+ratios 4

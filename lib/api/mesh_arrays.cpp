@@ -62,6 +62,11 @@ io::EleSource triangle_source(const MeshArrays& mesh) {
                 std::copy_n(&ele.corners[t * nc], nc, corners);
                 std::copy_n(ele.attributes.data() + t * na, na, attributes);
                 ++t;
+            },
+            [&ele, nc, na](std::size_t first, std::size_t n, std::uint32_t* corners,
+                           double* attributes) {
+                std::copy_n(&ele.corners[first * nc], n * nc, corners);
+                std::copy_n(ele.attributes.data() + first * na, n * na, attributes);
             }};
 }
 

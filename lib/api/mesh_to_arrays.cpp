@@ -97,31 +97,69 @@ double region_attribute(std::span<const double> region_attributes, std::size_t a
     return at < region_attributes.size() ? region_attributes[at] : 0.0;
 }
 
+// Every `stride`-th live triangle's slot, so that a run of triangles can be
+// read from anywhere without walking the slots before it.
+constexpr std::uint32_t stride = 4096;
+
+// The first live triangle slot at or after `slot` (there must be one),
+// passing over whole chunks nobody claimed (mesh.hpp).
+std::uint32_t live_from(const mesh::Mesh& mesh, std::uint32_t slot) {
+    constexpr std::uint32_t bits = mesh::Mesh::triangle_chunk_bits;
+    constexpr std::uint32_t mask = mesh::Mesh::TriangleTable::chunk_mask;
+    for (;; ++slot) {
+        while ((slot & mask) == 0 && !mesh.has_triangle_chunk(slot >> bits)) slot += mask + 1;
+        if (mesh.triangle(mesh::TriangleId{slot}).live()) return slot;
+    }
+}
+
 // The triangles as a stream that walks the mesh's slots on each pass;
 // `number` is shared by the passes (the -V statistics and the .ele file).
+// Its read() starts at the slot of the triangle `stride` * k before the
+// first one asked for, so threads can read runs of triangles at once.
 std::function<io::EleSource()> triangle_stream(const mesh::Mesh& mesh,
                                                std::vector<std::uint32_t> number,
                                                std::uint32_t count, std::uint32_t attribute_count,
                                                std::span<const double> region_attributes) {
-    auto shared_number = std::make_shared<const std::vector<std::uint32_t>>(std::move(number));
-    constexpr std::uint32_t chunk_bits = mesh::Mesh::triangle_chunk_bits;
-    constexpr std::uint32_t chunk_mask = mesh::Mesh::TriangleTable::chunk_mask;
-    return [&mesh, shared_number, count, attribute_count, region_attributes] {
+    struct Shared {
+        std::vector<std::uint32_t> number;
+        std::vector<std::uint32_t> slot_of;  // slot_of[k]: the slot of triangle k * stride
+    };
+    auto shared = std::make_shared<Shared>();
+    shared->number = std::move(number);
+    shared->slot_of.reserve(count / stride + 1);
+    std::uint32_t seen = 0;
+    mesh::for_each_triangle(mesh, [&](mesh::TriangleId id, const mesh::Triangle&) {
+        if (seen++ % stride == 0) shared->slot_of.push_back(index(id));
+    });
+    // Fills triangle `t`'s corners and attributes.
+    const auto put = [shared, attribute_count, region_attributes](
+                         const mesh::Triangle& t, std::uint32_t* corners, double* attributes) {
+        for (int k = 0; k < 3; ++k) corners[k] = shared->number[index(t.v[k])];
+        const std::size_t row = std::size_t{t.region} * attribute_count;
+        for (std::uint32_t i = 0; i < attribute_count; ++i)
+            attributes[i] = region_attribute(region_attributes, row + i);
+    };
+    return [&mesh, shared, put, count, attribute_count] {
         return io::EleSource{
             count, 3, attribute_count,
-            [&mesh, shared_number, attribute_count, region_attributes, slot = std::uint32_t{0}](
-                std::uint32_t* corners, double* attributes) mutable {
-                while (!mesh.triangle(mesh::TriangleId{slot}).live()) {
-                    ++slot;
-                    // A chunk nobody claimed, whole (mesh.hpp).
-                    while ((slot & chunk_mask) == 0 && !mesh.has_triangle_chunk(slot >> chunk_bits))
-                        slot += chunk_mask + 1;
+            [&mesh, put, slot = std::uint32_t{0}](std::uint32_t* corners,
+                                                  double* attributes) mutable {
+                slot = live_from(mesh, slot);
+                put(mesh.triangle(mesh::TriangleId{slot++}), corners, attributes);
+            },
+            [&mesh, shared, put, attribute_count](std::size_t first, std::size_t n,
+                                                  std::uint32_t* corners, double* attributes) {
+                if (n == 0) return;
+                std::uint32_t slot = shared->slot_of[first / stride];
+                for (std::size_t skip = first % stride;; ++slot) {
+                    slot = live_from(mesh, slot);
+                    if (skip-- == 0) break;
                 }
-                const mesh::Triangle& t = mesh.triangle(mesh::TriangleId{slot++});
-                for (int k = 0; k < 3; ++k) corners[k] = (*shared_number)[index(t.v[k])];
-                const std::size_t row = std::size_t{t.region} * attribute_count;
-                for (std::uint32_t i = 0; i < attribute_count; ++i)
-                    attributes[i] = region_attribute(region_attributes, row + i);
+                for (std::size_t i = 0; i < n; ++i, ++slot) {
+                    slot = live_from(mesh, slot);
+                    put(mesh.triangle(mesh::TriangleId{slot}), corners + 3 * i,
+                        attributes + i * attribute_count);
+                }
             }};
     };
 }

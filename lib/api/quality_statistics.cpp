@@ -6,10 +6,10 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
-#include <condition_variable>
+#include <functional>
 #include <limits>
-#include <mutex>
 #include <numbers>
 #include <thread>
 #include <vector>
@@ -130,62 +130,33 @@ void tally(const Chunk& chunk, const std::vector<double>& xy, Tally& into) {
     }
 }
 
-// With several threads: this thread reads chunks from the source (which
-// only reads in order) into a few buffers, and every thread, this one
-// included when no buffer is free, tallies the chunks read so far.  The
-// arithmetic (three arc cosines per triangle) costs far more than reading.
-Tally tally_in_parallel(io::EleSource& source, const std::vector<double>& xy, unsigned threads,
-                        std::size_t chunk_size) {
-    std::vector<Chunk> chunks(2 * threads);
-    std::vector<Chunk*> free_chunks, ready;
-    for (Chunk& c : chunks) free_chunks.push_back(&c);
-    std::mutex mutex;
-    std::condition_variable cv;
-    bool read_all = false;
+// With several threads: each thread claims runs of triangles in turn,
+// reads them from the source itself (read() serves any run, from any
+// thread) and tallies them.  Three arc cosines per triangle cost far more
+// than reading, but on one thread the reading alone held back the others.
+Tally tally_in_parallel(const io::EleSource& source, const std::vector<double>& xy,
+                        unsigned threads, std::size_t chunk_size) {
+    const std::uint32_t nc = source.corners_per_triangle;
+    std::atomic<std::size_t> next{0};
     std::vector<Tally> tallies(threads);
-    // Takes a chunk that is ready and tallies it; false when none is and no
-    // more will come.
-    const auto consume = [&](std::unique_lock<std::mutex>& lock, Tally& into, bool wait) {
-        if (wait) cv.wait(lock, [&] { return !ready.empty() || read_all; });
-        if (ready.empty()) return false;
-        Chunk* c = ready.back();
-        ready.pop_back();
-        lock.unlock();
-        tally(*c, xy, into);
-        lock.lock();
-        free_chunks.push_back(c);
-        cv.notify_all();
-        return true;
-    };
-    std::vector<std::jthread> helpers;
-    for (unsigned h = 1; h < threads; ++h)
-        helpers.emplace_back([&, h] {
-            std::unique_lock lock(mutex);
-            while (consume(lock, tallies[h], true)) {}
-        });
-    std::size_t left = source.count;
-    std::unique_lock lock(mutex);
-    while (left != 0) {
-        if (free_chunks.empty()) {
-            // Every buffer is read and waiting: tally one here, or wait
-            // for a helper to give one back.
-            if (!consume(lock, tallies[0], false))
-                cv.wait(lock, [&] { return !free_chunks.empty(); });
-            continue;
+    const auto work = [&](Tally& into) {
+        Chunk chunk;
+        std::vector<std::uint32_t> corners(nc * chunk_size);
+        std::vector<double> attributes(source.attribute_count * chunk_size);  // (read past)
+        chunk.corners.resize(3 * chunk_size);
+        for (std::size_t first; (first = next.fetch_add(chunk_size)) < source.count;) {
+            chunk.count = std::min(chunk_size, source.count - first);
+            source.read(first, chunk.count, corners.data(), attributes.data());
+            for (std::size_t i = 0; i < chunk.count; ++i)
+                std::copy_n(&corners[nc * i], 3, &chunk.corners[3 * i]);
+            tally(chunk, xy, into);
         }
-        Chunk* c = free_chunks.back();
-        free_chunks.pop_back();
-        lock.unlock();
-        fill(source, left, chunk_size, *c);
-        lock.lock();
-        ready.push_back(c);
-        cv.notify_all();
+    };
+    {
+        std::vector<std::jthread> helpers;
+        for (unsigned h = 1; h < threads; ++h) helpers.emplace_back(work, std::ref(tallies[h]));
+        work(tallies[0]);
     }
-    read_all = true;
-    cv.notify_all();
-    while (consume(lock, tallies[0], false)) {}
-    lock.unlock();
-    helpers.clear();  // (joined)
     for (unsigned h = 1; h < threads; ++h) tallies[0].merge(tallies[h]);
     return tallies[0];
 }
@@ -202,7 +173,7 @@ std::vector<std::string> quality_statistics(const MeshArrays& mesh, unsigned thr
     io::EleSource triangles = triangle_source(mesh);
     const auto& xy = mesh.nodes.xy;
     Tally t;
-    if (threads > 1 && triangles.count > chunk_size) {
+    if (threads > 1 && triangles.count > chunk_size && triangles.read) {
         t = tally_in_parallel(triangles, xy, threads, chunk_size);
     } else {
         Chunk chunk;

@@ -1,9 +1,10 @@
 // The output stage: every file the switches ask for, all or none, so that a
 // failure leaves no partial result and no earlier result clobbered.  With
-// several threads (-jN) the files are formatted and written side by side:
-// the .node and .ele files of a large mesh cost about the same, and
-// formatting numbers, like the kernel's copy of a write, runs on one core
-// per file.
+// several threads (-jN) the files are formatted and written side by side,
+// and a thread with no file left to start formats pieces of the large files
+// still being written (io/format_threads.hpp): formatting numbers is most of
+// the stage, and the .ele file of a large mesh alone costs more than the
+// .node beside it.
 
 #include <atomic>
 #include <exception>
@@ -16,6 +17,7 @@
 #include <gpdr/mesh_formats.hpp>
 
 #include "api/job_stages.hpp"
+#include "io/format_threads.hpp"
 #include "io/temporary_files.hpp"
 #include "mesh/traverse.hpp"
 #include "parallel/refine_parallel.hpp"
@@ -29,13 +31,14 @@ struct FileJob {
     std::function<void(io::OutputTransaction&)> write;
 };
 
-// Writes every job into a transaction of its own, on up to `threads`
-// threads (jobs are taken in order, so the first, largest files start
-// first), then renames all of them into place in job order, only when all
-// were written.  A failure rethrows the first failing job's error (in job
+// Writes every job into a transaction of its own, on the threads of
+// `threads` (jobs are taken in order, so the first, largest files start
+// first; a thread with no job left helps format the files being written),
+// then renames all of them into place in job order, only when all were
+// written.  A failure rethrows the first failing job's error (in job
 // order, whatever the timing), and the transactions' destructors remove
 // every temporary file.
-void write_all(const std::vector<FileJob>& jobs, unsigned threads, Progress* progress) {
+void write_all(const std::vector<FileJob>& jobs, io::FormatThreads& threads, Progress* progress) {
     const std::size_t n = jobs.size();
     const auto transactions = std::make_unique<io::OutputTransaction[]>(n);
     std::vector<std::exception_ptr> failures(n);
@@ -48,13 +51,15 @@ void write_all(const std::vector<FileJob>& jobs, unsigned threads, Progress* pro
             } catch (...) {
                 failures[j] = std::current_exception();
             }
+            threads.file_done();
         }
+        threads.help();
     };
+    threads.expect_files(n);
     {
-        // This thread and up to threads - 1 helpers, no more than there are files.
+        // This thread and threads - 1 helpers.
         std::vector<std::jthread> helpers;
-        for (std::size_t h = 1; h < std::min<std::size_t>(threads, n); ++h)
-            helpers.emplace_back(work);
+        for (unsigned h = 1; h < threads.threads() && n > 0; ++h) helpers.emplace_back(work);
         work();
     }
     for (const std::exception_ptr& f : failures)
@@ -104,9 +109,10 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
     const Options& o = *request.options;
     const FileNames& names = *request.names;
     if (request.progress != nullptr) request.progress->enter(Progress::Stage::writing);
+    io::FormatThreads threads(parallel::thread_count(o.threads));
     const io::WriteFormat format{request.base, !o.no_boundary_markers,
-                                 o.command.empty() ? std::string("gpdr") : o.command,
-                                 request.stamp};
+                                 o.command.empty() ? std::string("gpdr") : o.command, request.stamp,
+                                 threads.threads() > 1 ? &threads : nullptr};
 
     const bool want_poly =
         (o.poly || request.write_hull_poly) && !o.no_poly_output && !names.out_poly.empty();
@@ -195,7 +201,7 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
         add(names.out_svg, [&](io::OutputTransaction& out) {
             io::write_svg(out, names.out_svg, exported, format);
         });
-    write_all(jobs, parallel::thread_count(o.threads), request.progress);
+    write_all(jobs, threads, request.progress);
     std::vector<std::string> written;
     for (const FileJob& j : jobs) written.push_back(j.target);
     return written;

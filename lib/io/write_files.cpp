@@ -11,7 +11,11 @@
 // file reads back as it was written.
 
 #include <algorithm>
+#include <array>
+#include <cstring>
 #include <iterator>
+#include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include <fmt/compile.h>
@@ -19,6 +23,7 @@
 #include <gpdr/errors.hpp>
 #include <gpdr/io.hpp>
 
+#include "io/format_threads.hpp"
 #include "io/output_file.hpp"
 
 namespace gpdr::io {
@@ -26,10 +31,76 @@ namespace gpdr::io {
 namespace {
 
 using Out = std::back_insert_iterator<fmt::memory_buffer>;
+using detail::put_lines;
 
 // Index i (0-based) as written with numbering base `base`.
 std::uint64_t numbered(std::size_t i, int base) { return static_cast<std::uint64_t>(i) + base; }
 std::uint64_t numbered_index(std::uint32_t i, int base) { return std::uint64_t{i} + base; }
+
+// One line's integer columns and the blanks between them, built in a local
+// array and appended to the text at once.  A column is right-aligned in
+// `width` characters: the bytes of fmt's "{:4}" for width 4.  fmt parses
+// the width on every call, and appending each piece to the buffer on its
+// own costs more than the digits; the .ele file is mostly such columns.
+class Columns {
+    // "00" to "99".
+    static constexpr auto pairs = [] {
+        std::array<char, 200> table{};
+        for (int i = 0; i < 100; ++i) {
+            table[2 * i] = static_cast<char>('0' + i / 10);
+            table[2 * i + 1] = static_cast<char>('0' + i % 10);
+        }
+        return table;
+    }();
+
+public:
+    template <class Int>
+    Columns& number(Int value, std::size_t width = 4) {
+        using Unsigned = std::make_unsigned_t<Int>;
+        bool negative = false;
+        if constexpr (std::is_signed_v<Int>) negative = value < 0;
+        Unsigned u =
+            negative ? Unsigned(0) - static_cast<Unsigned>(value) : static_cast<Unsigned>(value);
+        // The length: a sign, two digits per pair below the leading one.
+        std::size_t n = negative ? 1 : 0;
+        Unsigned lead = u;
+        for (; lead >= 100; lead /= 100) n += 2;
+        n += lead >= 10 ? 2 : 1;
+        for (; n < width; --width) *end_++ = ' ';
+        char* p = end_ += n;
+        // Two digits at a time, from a table of the hundred pairs.
+        for (; u >= 100; u /= 100) {
+            p -= 2;
+            std::memcpy(p, &pairs[2 * (u % 100)], 2);
+        }
+        if (u >= 10) {
+            p -= 2;
+            std::memcpy(p, &pairs[2 * u], 2);
+        } else {
+            *--p = static_cast<char>('0' + u);
+        }
+        if (negative) *--p = '-';
+        return *this;
+    }
+    template <std::size_t N>
+    Columns& blanks(const char (&literal)[N]) {
+        std::memcpy(end_, literal, N - 1);
+        end_ += N - 1;
+        return *this;
+    }
+    void append_to(fmt::memory_buffer& text) const { text.append(line_, end_); }
+
+private:
+    // Room for seven 64-bit numbers and their blanks.
+    char line_[224];
+    char* end_ = line_;
+};
+
+// A single column (an index before formatted reals).
+template <class Int>
+void put_int(fmt::memory_buffer& text, Int value) {
+    Columns().number(value).append_to(text);
+}
 
 void check_sizes(bool ok, const std::string& path, const char* what) {
     if (!ok) throw OutputError("cannot write " + path + ": inconsistent data (" + what + ")");
@@ -43,15 +114,15 @@ void put_vertices(OutputTransaction::File& file, const NodeSet& nodes, const Wri
     auto& buf = file.buffer();
     Out out(buf);
     fmt::format_to(out, FMT_COMPILE("{}  2  {}  {}\n"), n, na, markers ? 1 : 0);
-    for (std::size_t v = 0; v < n; ++v) {
-        fmt::format_to(out, FMT_COMPILE("{:4}    {}  {}"), numbered(v, format.base),
-                       nodes.xy[2 * v], nodes.xy[2 * v + 1]);
+    put_lines(file, format.threads, n, [&](std::size_t v, fmt::memory_buffer& text) {
+        Out line(text);
+        put_int(text, numbered(v, format.base));
+        fmt::format_to(line, FMT_COMPILE("    {}  {}"), nodes.xy[2 * v], nodes.xy[2 * v + 1]);
         for (std::uint32_t a = 0; a < na; ++a)
-            fmt::format_to(out, FMT_COMPILE("  {}"), nodes.attributes[v * na + a]);
-        if (markers) fmt::format_to(out, FMT_COMPILE("    {}"), nodes.markers[v]);
-        buf.push_back('\n');
-        file.flush_if_full();
-    }
+            fmt::format_to(line, FMT_COMPILE("  {}"), nodes.attributes[v * na + a]);
+        if (markers) fmt::format_to(line, FMT_COMPILE("    {}"), nodes.markers[v]);
+        text.push_back('\n');
+    });
 }
 
 void check_nodes(const NodeSet& nodes, const std::string& path) {
@@ -93,14 +164,16 @@ void write_poly(OutputTransaction& tx, const std::string& path, const PolyFile& 
     }
     const bool markers = format.markers && segs.has_markers();
     fmt::format_to(out, FMT_COMPILE("{}  {}\n"), segs.size(), markers ? 1 : 0);
-    for (std::size_t s = 0; s < segs.size(); ++s) {
-        fmt::format_to(out, FMT_COMPILE("{:4}    {:4}  {:4}"), numbered(s, format.base),
-                       numbered_index(segs.endpoints[2 * s], format.base),
-                       numbered_index(segs.endpoints[2 * s + 1], format.base));
-        if (markers) fmt::format_to(out, FMT_COMPILE("    {:4}"), segs.markers[s]);
-        buf.push_back('\n');
-        file.flush_if_full();
-    }
+    put_lines(file, format.threads, segs.size(), [&](std::size_t s, fmt::memory_buffer& text) {
+        Columns line;
+        line.number(numbered(s, format.base))
+            .blanks("    ")
+            .number(numbered_index(segs.endpoints[2 * s], format.base))
+            .blanks("  ")
+            .number(numbered_index(segs.endpoints[2 * s + 1], format.base));
+        if (markers) line.blanks("    ").number(segs.markers[s]);
+        line.blanks("\n").append_to(text);
+    });
     const std::size_t holes = poly.holes.size() / 2;
     fmt::format_to(out, FMT_COMPILE("{}\n"), holes);
     for (std::size_t h = 0; h < holes; ++h)
@@ -144,20 +217,62 @@ void write_ele(OutputTransaction& tx, const std::string& path, const EleSource& 
     Out out(buf);
     fmt::format_to(out, FMT_COMPILE("{}  {}  {}\n"), n, nc, na);
     const int base = format.base;
-    std::uint32_t c[6];
-    std::vector<double> attributes(na);
-    for (std::size_t t = 0; t < n; ++t) {
-        source.next(c, attributes.data());
-        fmt::format_to(out, FMT_COMPILE("{:4}    {:4}  {:4}  {:4}"), numbered(t, base),
-                       numbered_index(c[0], base), numbered_index(c[1], base),
-                       numbered_index(c[2], base));
-        if (nc == 6)
-            fmt::format_to(out, FMT_COMPILE("  {:4}  {:4}  {:4}"), numbered_index(c[3], base),
-                           numbered_index(c[4], base), numbered_index(c[5], base));
+    // Triangle t's line, from its corners and attributes.
+    const auto put_triangle = [&](std::size_t t, const std::uint32_t* c, const double* attributes,
+                                  fmt::memory_buffer& text) {
+        Columns line;
+        line.number(numbered(t, base)).blanks("  ");
+        for (std::uint32_t k = 0; k < nc; ++k) line.blanks("  ").number(numbered_index(c[k], base));
+        if (na == 0) {
+            line.blanks("\n").append_to(text);
+            return;
+        }
+        line.append_to(text);
+        Out out(text);
         for (std::uint32_t a = 0; a < na; ++a)
             fmt::format_to(out, FMT_COMPILE("  {}"), attributes[a]);
-        buf.push_back('\n');
-        file.flush_if_full();
+        text.push_back('\n');
+    };
+    FormatThreads* const threads = format.threads;
+    if (threads == nullptr || threads->threads() < 2 || n <= detail::lines_per_piece) {
+        std::uint32_t c[6];
+        std::vector<double> attributes(na);
+        for (std::size_t t = 0; t < n; ++t) {
+            source.next(c, attributes.data());
+            put_triangle(t, c, attributes.data(), buf);
+            file.flush_if_full();
+        }
+    } else {
+        // Each piece's triangles are read into its slot, then formatted, on
+        // any thread; a source that reads in order only is read when the
+        // piece is claimed, pieces being claimed in order.
+        constexpr std::size_t per_piece = detail::lines_per_piece;
+        std::vector<std::vector<std::uint32_t>> corners(threads->window());
+        std::vector<std::vector<double>> attributes(threads->window());
+        FormatThreads::Pieces pieces;
+        pieces.count = (n + per_piece - 1) / per_piece;
+        const auto lines = [n](std::size_t piece) {
+            return std::min(n, (piece + 1) * per_piece) - piece * per_piece;
+        };
+        const auto read = [&](std::size_t piece, std::size_t slot) {
+            const std::size_t k = lines(piece);
+            corners[slot].resize(k * nc);
+            attributes[slot].resize(k * na);
+            if (source.read) {
+                source.read(piece * per_piece, k, corners[slot].data(), attributes[slot].data());
+                return;
+            }
+            for (std::size_t i = 0; i < k; ++i)
+                source.next(&corners[slot][i * nc], attributes[slot].data() + i * na);
+        };
+        if (!source.read) pieces.prepare = read;
+        pieces.format = [&](std::size_t piece, std::size_t slot, fmt::memory_buffer& text) {
+            if (source.read) read(piece, slot);
+            for (std::size_t i = 0; i < lines(piece); ++i)
+                put_triangle(piece * per_piece + i, &corners[slot][i * nc],
+                             attributes[slot].data() + i * na, text);
+        };
+        threads->write_pieces(file, pieces);
     }
     file.finish(format.command, format.stamp);
 }
@@ -168,10 +283,10 @@ void write_area(OutputTransaction& tx, const std::string& path, const AreaSet& a
     auto& buf = file.buffer();
     Out out(buf);
     fmt::format_to(out, FMT_COMPILE("{}\n"), areas.size());
-    for (std::size_t t = 0; t < areas.size(); ++t) {
-        fmt::format_to(out, FMT_COMPILE("{:4}    {}\n"), numbered(t, format.base), areas[t]);
-        file.flush_if_full();
-    }
+    put_lines(file, format.threads, areas.size(), [&](std::size_t t, fmt::memory_buffer& text) {
+        put_int(text, numbered(t, format.base));
+        fmt::format_to(Out(text), FMT_COMPILE("    {}\n"), areas[t]);
+    });
     file.finish(format.command, format.stamp);
 }
 
@@ -185,14 +300,15 @@ void write_edge(OutputTransaction& tx, const std::string& path, const EdgeSet& e
     auto& buf = file.buffer();
     Out out(buf);
     fmt::format_to(out, FMT_COMPILE("{}  {}\n"), edges.size(), markers ? 1 : 0);
-    for (std::size_t e = 0; e < edges.size(); ++e) {
-        fmt::format_to(out, FMT_COMPILE("{:4}   {}  {}"), numbered(e, format.base),
+    put_lines(file, format.threads, edges.size(), [&](std::size_t e, fmt::memory_buffer& text) {
+        Out line(text);
+        put_int(text, numbered(e, format.base));
+        fmt::format_to(line, FMT_COMPILE("   {}  {}"),
                        numbered_index(edges.endpoints[2 * e], format.base),
                        numbered_index(edges.endpoints[2 * e + 1], format.base));
-        if (markers) fmt::format_to(out, FMT_COMPILE("  {}"), edges.markers[e]);
-        buf.push_back('\n');
-        file.flush_if_full();
-    }
+        if (markers) fmt::format_to(line, FMT_COMPILE("  {}"), edges.markers[e]);
+        text.push_back('\n');
+    });
     file.finish(format.command, format.stamp);
 }
 
@@ -206,12 +322,13 @@ void write_neigh(OutputTransaction& tx, const std::string& path, const Neighbour
         return n == NeighbourSet::none ? -1 : static_cast<std::int64_t>(n) + format.base;
     };
     fmt::format_to(out, FMT_COMPILE("{}  3\n"), neighbours.size());
-    for (std::size_t t = 0; t < neighbours.size(); ++t) {
-        const std::uint32_t* n = &neighbours.neighbours[3 * t];
-        fmt::format_to(out, FMT_COMPILE("{:4}    {}  {}  {}\n"), numbered(t, format.base),
-                       written(n[0]), written(n[1]), written(n[2]));
-        file.flush_if_full();
-    }
+    put_lines(file, format.threads, neighbours.size(),
+              [&](std::size_t t, fmt::memory_buffer& text) {
+                  const std::uint32_t* n = &neighbours.neighbours[3 * t];
+                  put_int(text, numbered(t, format.base));
+                  fmt::format_to(Out(text), FMT_COMPILE("    {}  {}  {}\n"), written(n[0]),
+                                 written(n[1]), written(n[2]));
+              });
     file.finish(format.command, format.stamp);
 }
 
@@ -224,17 +341,23 @@ void write_off(OutputTransaction& tx, const std::string& path, const NodeSet& no
     auto& buf = file.buffer();
     Out out(buf);
     fmt::format_to(out, FMT_COMPILE("OFF\n{}  {}  {}\n"), nodes.size(), ele.size(), edge_count);
-    for (std::size_t v = 0; v < nodes.size(); ++v) {
-        fmt::format_to(out, FMT_COMPILE("{}  {}  0\n"), nodes.xy[2 * v], nodes.xy[2 * v + 1]);
-        file.flush_if_full();
-    }
+    put_lines(file, format.threads, nodes.size(), [&](std::size_t v, fmt::memory_buffer& text) {
+        fmt::format_to(Out(text), FMT_COMPILE("{}  {}  0\n"), nodes.xy[2 * v], nodes.xy[2 * v + 1]);
+    });
     // Geomview numbers from 0 whatever the run's base; six-node triangles
     // are drawn by their corners.
-    for (std::size_t t = 0; t < ele.size(); ++t) {
+    put_lines(file, format.threads, ele.size(), [&](std::size_t t, fmt::memory_buffer& text) {
         const std::uint32_t* c = &ele.corners[t * nc];
-        fmt::format_to(out, FMT_COMPILE(" 3   {:4}  {:4}  {:4}\n"), c[0], c[1], c[2]);
-        file.flush_if_full();
-    }
+        Columns()
+            .blanks(" 3   ")
+            .number(c[0])
+            .blanks("  ")
+            .number(c[1])
+            .blanks("  ")
+            .number(c[2])
+            .blanks("\n")
+            .append_to(text);
+    });
     file.finish(format.command, format.stamp);
 }
 
@@ -247,17 +370,17 @@ void write_voronoi_edge(OutputTransaction& tx, const std::string& path, const Vo
     auto& buf = file.buffer();
     Out out(buf);
     fmt::format_to(out, FMT_COMPILE("{}  0\n"), edges.size());
-    for (std::size_t e = 0; e < edges.size(); ++e) {
+    put_lines(file, format.threads, edges.size(), [&](std::size_t e, fmt::memory_buffer& text) {
         const std::uint64_t a = numbered_index(edges.endpoints[2 * e], format.base);
         const std::uint32_t b = edges.endpoints[2 * e + 1];
+        put_int(text, numbered(e, format.base));
         if (b == VoronoiEdgeSet::ray)
-            fmt::format_to(out, FMT_COMPILE("{:4}   {}  -1  {}  {}\n"), numbered(e, format.base), a,
+            fmt::format_to(Out(text), FMT_COMPILE("   {}  -1  {}  {}\n"), a,
                            edges.directions[2 * e], edges.directions[2 * e + 1]);
         else
-            fmt::format_to(out, FMT_COMPILE("{:4}   {}  {}\n"), numbered(e, format.base), a,
+            fmt::format_to(Out(text), FMT_COMPILE("   {}  {}\n"), a,
                            numbered_index(b, format.base));
-        file.flush_if_full();
-    }
+    });
     file.finish(format.command, format.stamp);
 }
 

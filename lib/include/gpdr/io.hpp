@@ -124,6 +124,8 @@ private:
 // killed run leaves no hidden temporary behind.
 void remove_temporary_files() noexcept;
 
+class FormatThreads;  // threads that format pieces of a file's lines (internal)
+
 // What every writer needs besides the data.
 struct WriteFormat {
     int base = 1;         // number entries from 0 or 1
@@ -133,6 +135,10 @@ struct WriteFormat {
     // " (run <stamp>)" when `stamp` is not empty.
     std::string command;
     std::string stamp = {};
+    // Threads shared by the writers of one output stage (write_outputs),
+    // which format a large file's lines in pieces, written in order: the
+    // bytes do not change.  Null: each file is formatted by its writer.
+    FormatThreads* threads = nullptr;
 };
 
 void write_node(OutputTransaction& out, const std::string& path, const NodeSet& nodes,
@@ -159,6 +165,13 @@ struct EleSource {
     std::uint32_t corners_per_triangle = 3;
     std::uint32_t attribute_count = 0;
     std::function<void(std::uint32_t* corners, double* attributes)> next;
+    // Optional: fills the corners and attributes of triangles first to
+    // first + n - 1, like n calls of next() from there, without touching
+    // next()'s place; callable from several threads at once.  With it a
+    // large file's triangles are read on the threads that format them.
+    std::function<void(std::size_t first, std::size_t n, std::uint32_t* corners,
+                       double* attributes)>
+        read = {};
 };
 void write_ele(OutputTransaction& out, const std::string& path, const EleSource& triangles,
                const WriteFormat& format);

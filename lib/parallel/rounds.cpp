@@ -99,10 +99,12 @@ public:
             joined_ = 0;
             finished_ = 0;
         }
-        if (wanted == helpers)
-            start_.notify_all();
-        else
-            for (unsigned i = 0; i < wanted; ++i) start_.notify_one();
+        // Every helper is woken, and the first `wanted` to see the new
+        // round join it.  (Waking `wanted` of them one by one could wake a
+        // helper that had already joined, run and gone back to wait, which
+        // then finds the round full and sleeps again: the others would never
+        // hear of the round.)
+        if (wanted > 0) start_.notify_all();
         take_lanes(round, 0);
         if (wanted > 0) {
             const auto t0 = Clock::now();

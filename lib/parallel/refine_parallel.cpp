@@ -342,7 +342,7 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in
         w.handed_off_triangles.clear();
     }
 
-    Scheduler scheduler(tree, report, options.checked);
+    Scheduler scheduler(tree, report, options.checked, options.deterministic);
     if (workers[0]->outgrew_root) scheduler.set_serial();
     scheduler.offer(Quadtree::root());
     report.master.managing += seconds(start, Clock::now());

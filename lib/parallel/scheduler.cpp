@@ -198,12 +198,6 @@ void Scheduler::plan_round(std::vector<NodeId>& round) {
         std::uint64_t cell;
         NodeId leaf;
     };
-    rounds_ = true;
-    // (The first round finds the root in the queue.)
-    for (; !queue_.empty(); queue_.pop()) {
-        info(queue_.top().second).queued = false;
-        offer(queue_.top().second);
-    }
     std::vector<Candidate> candidates;
     candidates.reserve(waiting_.size());
     for (const NodeId x : waiting_) {

@@ -51,8 +51,9 @@ namespace gpdr::parallel {
 
 class Scheduler {
 public:
-    Scheduler(Quadtree& tree, ParallelReport& report, bool checked)
-        : tree_(tree), report_(report), checked_(checked) {}
+    // `rounds`: the leaves are handed out by plan_round, not assign.
+    Scheduler(Quadtree& tree, ParallelReport& report, bool checked, bool rounds)
+        : tree_(tree), report_(report), checked_(checked), rounds_(rounds) {}
 
     // Queues a leaf that may have work (master thread only, leaf not held).
     void offer(NodeId leaf);
@@ -146,7 +147,7 @@ private:
     std::vector<Active> active_;  // by entry
     // Rounds (plan_round) keep the leaves offered in `waiting_` instead of
     // the queue, each once (MasterInfo::queued).
-    bool rounds_ = false;
+    bool rounds_;
     std::vector<NodeId> waiting_;
     std::vector<NodeId> zone_scratch_;
 };

@@ -191,7 +191,7 @@ Meshed make_mesh(const Options& options, api::Input& input, const WarningSink& w
                                    materialise);
     result.vertices = m.arrays.nodes.size() - tri.duplicates;
     result.triangles = m.arrays.triangle_count;
-    result.hull_edges = mesh::count_hull_edges(tri.mesh);
+    result.hull_edges = m.arrays.hull_edge_count;
     result.edges =
         (3 * result.triangles + result.hull_edges) / 2;  // each edge has two sides but the hull's
     result.segments = tri.mesh.subsegments().size();

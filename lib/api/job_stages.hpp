@@ -115,7 +115,7 @@ struct PreparedOutputs {
 PreparedOutputs prepare_outputs(const Options& options, const mesh::Mesh& mesh, MeshArrays& arrays);
 
 // The subsegments of the mesh as .poly segments, in the arrays' numbering.
-SegmentSet subsegments_of(const mesh::Mesh& mesh, const PreparedOutputs& prepared);
+SegmentSet subsegments_of(const MeshArrays& arrays, const PreparedOutputs& prepared);
 
 // The outputs the switches ask for, in memory: what write_outputs() would
 // write, without the files.  -j and -o2 change `arrays`, and its vectors are

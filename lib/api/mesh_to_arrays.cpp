@@ -76,19 +76,34 @@ void copy_added_attributes(const mesh::Mesh& mesh, std::size_t input_count,
     }
 }
 
-// The number of live triangles; with neighbours, also each slot's number
-// (compact, in id order) in `triangle_number`.
-std::uint32_t number_triangles(const mesh::Mesh& mesh, bool with_neighbours,
-                               std::vector<std::uint32_t>& triangle_number) {
+// The one walk over the triangles that the output needs: it counts the
+// live triangles, keeps every `stride`-th live triangle's slot in `slot_of`
+// (for the stream below) and, with neighbours, each slot's number (compact,
+// in id order) in `triangle_number`, and lists the edges that the markers
+// and the segments come from: the hull's in `hull` and the subsegments in
+// out.subsegment_edges, each once, in the order of mesh::for_each_edge.
+constexpr std::uint32_t stride = 4096;
+std::uint32_t walk_triangles(const mesh::Mesh& mesh, bool with_neighbours,
+                             std::vector<std::uint32_t>& triangle_number,
+                             std::vector<std::uint32_t>& slot_of, std::vector<MeshEdge>& hull,
+                             MeshArrays& out) {
     std::uint32_t count = 0;
-    if (with_neighbours) {
-        triangle_number.assign(mesh.triangle_end(), none);
-        mesh::for_each_triangle(mesh, [&](mesh::TriangleId id, const mesh::Triangle&) {
-            triangle_number[index(id)] = count++;
-        });
-    } else {
-        mesh::for_each_triangle(mesh, [&](mesh::TriangleId, const mesh::Triangle&) { ++count; });
-    }
+    if (with_neighbours) triangle_number.assign(mesh.triangle_end(), none);
+    mesh::for_each_triangle(mesh, [&](mesh::TriangleId id, const mesh::Triangle& t) {
+        if (count % stride == 0) slot_of.push_back(index(id));
+        if (with_neighbours) triangle_number[index(id)] = count;
+        ++count;
+        for (int k = 0; k < 3; ++k) {
+            const mesh::EdgeRef across = t.n[k];
+            const bool on_hull = across.is_none();
+            // The edge is listed from its triangle with the lower id.
+            if (!on_hull && index(across.triangle()) < index(id)) continue;
+            if (!on_hull && !t.is_subsegment(k)) continue;
+            const MeshEdge e{index(t.v[mesh::next3(k)]), index(t.v[mesh::prev3(k)]), on_hull};
+            if (on_hull) hull.push_back(e);
+            if (t.is_subsegment(k)) out.subsegment_edges.push_back(e);
+        }
+    });
     return count;
 }
 
@@ -96,10 +111,6 @@ std::uint32_t number_triangles(const mesh::Mesh& mesh, bool with_neighbours,
 double region_attribute(std::span<const double> region_attributes, std::size_t at) {
     return at < region_attributes.size() ? region_attributes[at] : 0.0;
 }
-
-// Every `stride`-th live triangle's slot, so that a run of triangles can be
-// read from anywhere without walking the slots before it.
-constexpr std::uint32_t stride = 4096;
 
 // The first live triangle slot at or after `slot` (there must be one),
 // passing over whole chunks nobody claimed (mesh.hpp).
@@ -113,24 +124,23 @@ std::uint32_t live_from(const mesh::Mesh& mesh, std::uint32_t slot) {
 }
 
 // The triangles as a stream that walks the mesh's slots on each pass;
-// `number` is shared by the passes (the -V statistics and the .ele file).
-// Its read() starts at the slot of the triangle `stride` * k before the
-// first one asked for, so threads can read runs of triangles at once.
+// `number` and `slot_of` (slot_of[k]: the slot of triangle k * stride, so
+// that a run of triangles can be read from anywhere without walking the
+// slots before it) are shared by the passes (the -V statistics and each
+// file).  Its read() starts at the slot of the triangle `stride` * k before
+// the first one asked for, so threads can read runs of triangles at once.
 std::function<io::EleSource()> triangle_stream(const mesh::Mesh& mesh,
                                                std::vector<std::uint32_t> number,
+                                               std::vector<std::uint32_t> slot_of,
                                                std::uint32_t count, std::uint32_t attribute_count,
                                                std::span<const double> region_attributes) {
     struct Shared {
         std::vector<std::uint32_t> number;
-        std::vector<std::uint32_t> slot_of;  // slot_of[k]: the slot of triangle k * stride
+        std::vector<std::uint32_t> slot_of;
     };
     auto shared = std::make_shared<Shared>();
     shared->number = std::move(number);
-    shared->slot_of.reserve(count / stride + 1);
-    std::uint32_t seen = 0;
-    mesh::for_each_triangle(mesh, [&](mesh::TriangleId id, const mesh::Triangle&) {
-        if (seen++ % stride == 0) shared->slot_of.push_back(index(id));
-    });
+    shared->slot_of = std::move(slot_of);
     // Fills triangle `t`'s corners and attributes.
     const auto put = [shared, attribute_count, region_attributes](
                          const mesh::Triangle& t, std::uint32_t* corners, double* attributes) {
@@ -155,10 +165,23 @@ std::function<io::EleSource()> triangle_stream(const mesh::Mesh& mesh,
                     slot = live_from(mesh, slot);
                     if (skip-- == 0) break;
                 }
-                for (std::size_t i = 0; i < n; ++i, ++slot) {
-                    slot = live_from(mesh, slot);
-                    put(mesh.triangle(mesh::TriangleId{slot}), corners + 3 * i,
-                        attributes + i * attribute_count);
+                // A run waits on memory: the triangles' corners are
+                // numbered through a table as large as the vertices.  So a
+                // batch of triangles is found first and their numbers
+                // asked for ahead (prefetch), then each is taken.
+                constexpr std::size_t batch = 64;
+                std::uint32_t slots[batch];
+                for (std::size_t done = 0; done < n;) {
+                    const std::size_t m = std::min(batch, n - done);
+                    for (std::size_t i = 0; i < m; ++i, ++slot) {
+                        slot = live_from(mesh, slot);
+                        slots[i] = slot;
+                        for (const mesh::VertexId v : mesh.triangle(mesh::TriangleId{slot}).v)
+                            __builtin_prefetch(&shared->number[index(v)]);
+                    }
+                    for (std::size_t i = 0; i < m; ++i, ++done)
+                        put(mesh.triangle(mesh::TriangleId{slots[i]}), corners + 3 * done,
+                            attributes + done * attribute_count);
                 }
             }};
     };
@@ -189,7 +212,7 @@ void copy_triangles(const mesh::Mesh& mesh, const std::vector<std::uint32_t>& nu
 // Markers: keep non-zero input markers; otherwise a subsegment's marker,
 // then 1 for any boundary vertex.
 void set_vertex_markers(const mesh::Mesh& mesh, const std::vector<std::uint32_t>& number,
-                        NodeSet& nodes) {
+                        const std::vector<MeshEdge>& hull, NodeSet& nodes) {
     nodes.markers.resize(nodes.size(), 0);
     std::vector<bool> fixed(nodes.size());
     for (std::size_t v = 0; v < nodes.size(); ++v) fixed[v] = nodes.markers[v] != 0;
@@ -218,10 +241,9 @@ void set_vertex_markers(const mesh::Mesh& mesh, const std::vector<std::uint32_t>
                 nodes.markers[v] = m.marker;
                 fixed[v] = true;
             }
-    mesh::for_each_hull_edge(mesh, [&](const mesh::EdgeView& e) {
-        for (const auto v : {number[index(e.from)], number[index(e.to)]})
+    for (const MeshEdge& e : hull)
+        for (const auto v : {number[e.from], number[e.to]})
             if (!fixed[v]) nodes.markers[v] = 1;
-    });
 }
 
 }  // namespace
@@ -234,8 +256,11 @@ MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t inp
         number_vertices(mesh, input_count, nodes, out.mesh_ids);
     copy_added_attributes(mesh, input_count, out.mesh_ids, nodes);
 
-    std::vector<std::uint32_t> triangle_number;
-    const std::uint32_t count = number_triangles(mesh, with_neighbours, triangle_number);
+    std::vector<std::uint32_t> triangle_number, slot_of;
+    std::vector<MeshEdge> hull;
+    const std::uint32_t count =
+        walk_triangles(mesh, with_neighbours, triangle_number, slot_of, hull, out);
+    out.hull_edge_count = hull.size();
     if (with_neighbours) out.neighbours.neighbours.reserve(3 * std::size_t{count});
     out.triangle_count = count;
     out.triangles.corners_per_triangle = 3;
@@ -243,9 +268,10 @@ MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t inp
     if (materialise)
         copy_triangles(mesh, number, triangle_number, with_neighbours, region_attributes, out);
     else
-        out.stream = triangle_stream(mesh, number, count, attribute_count, region_attributes);
+        out.stream = triangle_stream(mesh, number, std::move(slot_of), count, attribute_count,
+                                     region_attributes);
 
-    set_vertex_markers(mesh, number, nodes);
+    set_vertex_markers(mesh, number, hull, nodes);
     out.nodes = std::move(nodes);
     return out;
 }

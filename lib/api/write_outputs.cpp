@@ -93,14 +93,15 @@ PreparedOutputs prepare_outputs(const Options& o, const mesh::Mesh& mesh, MeshAr
     return p;
 }
 
-SegmentSet subsegments_of(const mesh::Mesh& mesh, const PreparedOutputs& prepared) {
+SegmentSet subsegments_of(const MeshArrays& arrays, const PreparedOutputs& prepared) {
     SegmentSet segments;
-    mesh::for_each_edge(mesh, [&](const mesh::EdgeView& e) {
-        if (!e.subsegment) return;
-        segments.endpoints.push_back(prepared.number[index(e.from)]);
-        segments.endpoints.push_back(prepared.number[index(e.to)]);
-        segments.markers.push_back(prepared.mesh_marker(index(e.from), index(e.to), e.hull));
-    });
+    segments.endpoints.reserve(2 * arrays.subsegment_edges.size());
+    segments.markers.reserve(arrays.subsegment_edges.size());
+    for (const MeshEdge& e : arrays.subsegment_edges) {
+        segments.endpoints.push_back(prepared.number[e.from]);
+        segments.endpoints.push_back(prepared.number[e.to]);
+        segments.markers.push_back(prepared.mesh_marker(e.from, e.to, e.hull));
+    }
     return segments;
 }
 
@@ -122,7 +123,7 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
     const std::uint64_t edge_count = prepared.edge_count;
     const bool for_others = o.write_vtk || o.write_gmsh || o.write_svg;
     const SegmentSet segments =
-        want_poly || o.write_gmsh || o.write_svg ? subsegments_of(mesh, prepared) : SegmentSet{};
+        want_poly || o.write_gmsh || o.write_svg ? subsegments_of(arrays, prepared) : SegmentSet{};
     // What the files for other programs read: the arrays, and the
     // triangles once per pass they make (a fresh source each time).
     io::MeshExport exported;

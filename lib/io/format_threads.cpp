@@ -72,6 +72,12 @@ void FormatThreads::help() {
 }
 
 void FormatThreads::write_pieces(OutputTransaction::File& file, const Pieces& pieces) {
+    run(&file, pieces);
+}
+
+void FormatThreads::run_pieces(const Pieces& pieces) { run(nullptr, pieces); }
+
+void FormatThreads::run(OutputTransaction::File* file, const Pieces& pieces) {
     Job job;
     job.pieces = &pieces;
     job.text.resize(window_);
@@ -85,7 +91,7 @@ void FormatThreads::write_pieces(OutputTransaction::File& file, const Pieces& pi
             // No other thread touches this slot until `written` passes it.
             lock.unlock();
             try {
-                file.append(job.text[slot].data(), job.text[slot].size());
+                if (file != nullptr) file->append(job.text[slot].data(), job.text[slot].size());
             } catch (...) {
                 lock.lock();
                 job.failure = std::current_exception();

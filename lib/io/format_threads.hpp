@@ -60,9 +60,14 @@ public:
     // Formats every piece (this thread too) and appends them to `file` in
     // order; returns when all are written, rethrowing the first failure.
     void write_pieces(OutputTransaction::File& file, const Pieces& pieces);
+    // The same for work whose pieces write no text (a pass over a mesh
+    // whose results each piece keeps): returns when every piece is done.
+    void run_pieces(const Pieces& pieces);
 
 private:
     struct Job;
+    // write_pieces() into `file`, or run_pieces() when it is null.
+    void run(OutputTransaction::File* file, const Pieces& pieces);
     // With the lock held: claims and prepares the next piece of `job` if
     // the window allows, then formats it without the lock.  False if there
     // was nothing to claim.

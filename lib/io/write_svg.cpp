@@ -29,6 +29,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -43,6 +44,7 @@
 #include <gpdr/errors.hpp>
 #include <gpdr/mesh_formats.hpp>
 
+#include "io/format_threads.hpp"
 #include "io/output_file.hpp"
 #include "io/png_image.hpp"
 
@@ -140,6 +142,10 @@ struct AngleRange {
         largest_cot = std::max(largest_cot, most);
         smallest_cot = std::min(smallest_cot, least);
         return std::max({abx * abx + aby * aby, bcx * bcx + bcy * bcy, cax * cax + cay * cay});
+    }
+    void merge(const AngleRange& other) {
+        largest_cot = std::max(largest_cot, other.largest_cot);
+        smallest_cot = std::min(smallest_cot, other.smallest_cot);
     }
     static double degrees(double cot) { return std::atan2(1.0, cot) * 180 / std::numbers::pi; }
     bool empty() const { return largest_cot == -std::numeric_limits<double>::infinity(); }
@@ -362,12 +368,18 @@ struct DensityCounts {
           covered(std::size_t{w} * h, 0),
           used(vertex_count, 0) {}
 
+    // Marks a pixel or a vertex.  Threads may mark the same one at once
+    // (all write 1).
+    static void mark(std::uint8_t& m) {
+        std::atomic_ref<std::uint8_t>(m).store(1, std::memory_order_relaxed);
+    }
+
     // Mesh coordinates -> pixels (x right, y down, from the drawing's
     // corner: never negative).
     static double px(const Frame& frame, double mx) { return (mx - frame.min_x) * frame.scale; }
     static double py(const Frame& frame, double my) { return (frame.max_y - my) * frame.scale; }
 
-    // The vertices that the triangles use (after cover_triangles).
+    // The vertices that the triangles use (after the CoverPass).
     void count_vertices(const Frame& frame, const NodeSet& nodes) {
         for (std::size_t v = 0; v < nodes.size(); ++v) {
             if (used[v] == 0) continue;
@@ -404,7 +416,7 @@ struct DensityCounts {
                         sign * ((x[k1] - x[k]) * (cy - y[k]) - (y[k1] - y[k]) * (cx - x[k])) >= 0;
                 }
                 if (inside)
-                    covered[static_cast<std::size_t>(j) * w + static_cast<std::size_t>(i)] = 1;
+                    mark(covered[static_cast<std::size_t>(j) * w + static_cast<std::size_t>(i)]);
             }
         }
     }
@@ -421,55 +433,115 @@ struct DensityCounts {
 };
 
 // The pass over the triangles: the angle range, the vertices used, and the
-// pixel centres that the triangles cover.  Only a triangle with an edge of half a pixel or
-// more is drawn: a pixel centre in a smaller one is closer than half a
-// pixel to each of its corners, which lie in that pixel then, and the
-// vertices have marked it.  The pass waits on memory: a triangle's corners
-// are anywhere in the vertex array.  So the triangles come in batches: the
-// corners of a whole batch are asked for ahead (prefetch), then each
-// triangle is taken.
-AngleRange cover_triangles(const Frame& frame, const MeshExport& mesh, DensityCounts& counts) {
-    const NodeSet& nodes = *mesh.nodes;
-    AngleRange angles;
-    const double half_pixel_squared = 0.25 / (frame.scale * frame.scale);  // in the mesh's units
-    EleSource source = mesh.triangles();
-    std::vector<double> attributes(source.attribute_count);
-    constexpr std::size_t batch = 256;
-    std::vector<std::uint32_t> corners(3 * batch);
-    std::uint32_t c[6];
-    for (std::size_t first = 0; first < source.count; first += batch) {
-        const std::size_t n = std::min(batch, source.count - first);
-        for (std::size_t b = 0; b < n; ++b) {
-            source.next(c, attributes.data());
-            std::copy_n(c, 3, &corners[3 * b]);
-            for (int k = 0; k < 3; ++k) {
-                __builtin_prefetch(corner(nodes, c[k]));
-                counts.used[c[k]] = 1;
+// pixel centres that the triangles cover.  Only a triangle with an edge of
+// half a pixel or more is drawn: a pixel centre in a smaller one is closer
+// than half a pixel to each of its corners, which lie in that pixel then,
+// and the vertices have marked it.
+//
+// The pass waits on memory: a triangle's corners are anywhere in the vertex
+// array.  So the triangles come in batches: the corners of a whole batch are
+// asked for ahead (prefetch), then each triangle is taken.  With several
+// threads and a source that reads runs of triangles from anywhere, pieces of
+// the pass run on all of them: the marks are the same whichever thread makes
+// them, and each piece's angle range is merged after (minima and maxima, so
+// exact), so the picture does not change.
+class CoverPass {
+public:
+    CoverPass(const Frame& frame, const MeshExport& mesh, DensityCounts& counts)
+        : nodes_(*mesh.nodes),
+          counts_(counts),
+          frame_(frame),
+          per_triangle_(mesh.corners_per_triangle),
+          half_pixel_squared_(0.25 / (frame.scale * frame.scale)) {}  // in the mesh's units
+
+    AngleRange run(const MeshExport& mesh, FormatThreads* threads) {
+        const EleSource source = mesh.triangles();
+        const std::size_t pieces = (source.count + piece - 1) / piece;
+        if (threads == nullptr || threads->threads() < 2 || pieces < 2 || !source.read) {
+            AngleRange angles;
+            Batch batch(source);
+            for (std::size_t first = 0; first < source.count; first += read_batch) {
+                const std::size_t n = std::min(read_batch, source.count - first);
+                for (std::size_t t = 0; t < n; ++t)
+                    source.next(&batch.corners[per_triangle_ * t], batch.attributes.data());
+                take(batch.corners.data(), n, angles);
             }
+            return angles;
         }
-        for (std::size_t b = 0; b < n; ++b) {
-            const double* p[3] = {corner(nodes, corners[3 * b]), corner(nodes, corners[3 * b + 1]),
-                                  corner(nodes, corners[3 * b + 2])};
-            if (angles.add(p[0], p[1], p[2]) < half_pixel_squared) continue;
-            double x[3], y[3];
-            for (int k = 0; k < 3; ++k) {
-                x[k] = DensityCounts::px(frame, p[k][0]);
-                y[k] = DensityCounts::py(frame, p[k][1]);
+        std::vector<AngleRange> angles(pieces);
+        FormatThreads::Pieces work;
+        work.count = pieces;
+        work.format = [&](std::size_t p, std::size_t, fmt::memory_buffer&) {
+            Batch batch(source);
+            const std::size_t end = std::min(source.count, (p + 1) * piece);
+            for (std::size_t first = p * piece; first < end; first += read_batch) {
+                const std::size_t n = std::min(read_batch, end - first);
+                source.read(first, n, batch.corners.data(), batch.attributes.data());
+                take(batch.corners.data(), n, angles[p]);
             }
-            counts.cover(x, y);
+        };
+        threads->run_pieces(work);
+        AngleRange all;
+        for (const AngleRange& a : angles) all.merge(a);
+        return all;
+    }
+
+private:
+    // Triangles read at once (a multiple of them starts where the mesh's
+    // stream reads from without a walk), and per piece of the pass.
+    static constexpr std::size_t read_batch = 4096;
+    static constexpr std::size_t piece = 16 * read_batch;
+    // Triangles whose corners are asked for ahead at once.
+    static constexpr std::size_t ahead = 256;
+
+    struct Batch {
+        std::vector<std::uint32_t> corners;
+        std::vector<double> attributes;
+        explicit Batch(const EleSource& source)
+            : corners(read_batch * source.corners_per_triangle),
+              attributes(read_batch * source.attribute_count) {}
+    };
+
+    // n triangles, their corners `per_triangle_` apart in `corners`.
+    void take(const std::uint32_t* corners, std::size_t n, AngleRange& angles) {
+        for (std::size_t first = 0; first < n; first += ahead) {
+            const std::size_t m = std::min(ahead, n - first);
+            const std::uint32_t* c = corners + first * per_triangle_;
+            for (std::size_t b = 0; b < m; ++b)
+                for (int k = 0; k < 3; ++k) {
+                    __builtin_prefetch(corner(nodes_, c[per_triangle_ * b + k]));
+                    DensityCounts::mark(counts_.used[c[per_triangle_ * b + k]]);
+                }
+            for (std::size_t b = 0; b < m; ++b) {
+                const std::uint32_t* t = c + per_triangle_ * b;
+                const double* p[3] = {corner(nodes_, t[0]), corner(nodes_, t[1]),
+                                      corner(nodes_, t[2])};
+                if (angles.add(p[0], p[1], p[2]) < half_pixel_squared_) continue;
+                double x[3], y[3];
+                for (int k = 0; k < 3; ++k) {
+                    x[k] = DensityCounts::px(frame_, p[k][0]);
+                    y[k] = DensityCounts::py(frame_, p[k][1]);
+                }
+                counts_.cover(x, y);
+            }
         }
     }
-    return angles;
-}
+
+    const NodeSet& nodes_;
+    DensityCounts& counts_;
+    const Frame& frame_;
+    std::size_t per_triangle_;
+    double half_pixel_squared_;
+};
 
 // The large mesh: the density image.  Returns the density range, in
 // vertices per unit area of the mesh, of the pixels drawn.
 std::pair<double, double> draw_density(File& file, const Frame& frame, const MeshExport& mesh,
-                                       AngleRange& angles) {
+                                       AngleRange& angles, FormatThreads* threads) {
     const auto w = static_cast<std::uint32_t>(frame.width);
     const auto h = static_cast<std::uint32_t>(frame.height);
     DensityCounts counts(w, h, mesh.nodes->size());
-    angles = cover_triangles(frame, mesh, counts);
+    angles = CoverPass(frame, mesh, counts).run(mesh, threads);
     counts.count_vertices(frame, *mesh.nodes);
     // A few vertices per pixel are noise: the density shown is that of the
     // square of (2 smoothing + 1) pixels around each, the vertices in it
@@ -547,7 +619,7 @@ void write_svg(OutputTransaction& tx, const std::string& path, const MeshExport&
     if (small)
         draw_triangles(file, frame, mesh, angles, regions);
     else
-        density = draw_density(file, frame, mesh, angles);
+        density = draw_density(file, frame, mesh, angles, format.threads);
     put_segments(file, frame, nodes, segments, !small);
 
     Out out(file.buffer());

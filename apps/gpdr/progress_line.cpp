@@ -46,8 +46,8 @@ std::string progress_text(const Progress::Snapshot& s, double stage_seconds,
                                count(double(s.input_vertices)), time);
         case Progress::Stage::refining: {
             // A triangulation has about two triangles per vertex: the count
-            // is estimated from the mesh's vertices, which it keeps in one
-            // atomic, rather than counted.
+            // is estimated from the vertices, which the refining threads
+            // count in one atomic, rather than counted.
             const double triangles = 2.0 * double(s.vertices);
             const double added =
                 2.0 * double(s.vertices - std::min(s.vertices, stage_start_vertices));

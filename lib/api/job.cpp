@@ -2,6 +2,7 @@
 // and collecting what -V and -C report.  Each stage takes the data of the
 // one before and hands its result on; none reaches back.
 
+#include <atomic>
 #include <chrono>
 #include <optional>
 
@@ -157,11 +158,18 @@ Meshed make_mesh(const Options& options, api::Input& input, const WarningSink& w
             options,
             api::estimate_memory(options, tri.mesh, settings, input.nodes.data.attribute_count),
             api::memory_available());
+        std::atomic<std::uint64_t> steiner_counter{0};
         if (progress != nullptr) {
             progress->enter(Progress::Stage::refining);
-            // The vertex count is one atomic of the mesh: reading it from
-            // the program's thread costs the refining threads nothing.
-            progress->watch([&mesh = tri.mesh] { return std::uint64_t{mesh.vertex_end()}; });
+            // The refining threads count the vertices they add in one
+            // atomic, in batches: reading it from the program's thread
+            // costs them nothing.  (The mesh's vertex ids are no count:
+            // parallel refinement claims them in chunks by a fixed rule,
+            // with holes.)
+            settings.steiner_counter = &steiner_counter;
+            progress->watch([&steiner_counter, before = std::uint64_t{tri.mesh.vertex_end()}] {
+                return before + steiner_counter.load(std::memory_order_relaxed);
+            });
         }
         struct Unwatch {
             Progress* p;

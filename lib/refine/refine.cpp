@@ -100,7 +100,9 @@ Walk walk_to(const mesh::Mesh& mesh, TriangleId start, const Point& p,
 // ---- RefineRun ---------------------------------------------------------------
 
 RefineRun::RefineRun(const mesh::Mesh& mesh, const RefineSettings& settings)
-    : settings_(settings),
+    : steiner_used(settings.steiner_counter != nullptr ? *settings.steiner_counter
+                                                       : own_steiner_used_),
+      settings_(settings),
       quality_(settings_.criteria, SegmentEnds{settings_.segment_ends}),
       strategy_(settings_.strategy != nullptr ? settings_.strategy
                                               : &builtin_placement(settings_.placement)) {

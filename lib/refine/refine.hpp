@@ -85,6 +85,10 @@ struct RefineSettings {
     int no_segment_splitting = 0;   // -Y: 1 (boundary subsegments), -YY: 2 (all)
     bool steiner_limit = false;     // -S given
     std::uint64_t max_steiner = 0;  // -S<n>: what is left of the budget for this stage
+    // Optional: where the run counts the Steiner points its threads add (in
+    // batches), for a caller that watches the count from another thread
+    // while refinement runs (the progress line).  It must start at 0.
+    std::atomic<std::uint64_t>* steiner_counter = nullptr;
     // Safety net against non-termination (angle bounds above ~34°): at most
     // this many Steiner points; 0 derives it from the input (see refine.cpp).
     std::uint64_t safety_limit = 0;
@@ -137,10 +141,12 @@ public:
     double tiny_length_squared() const { return tiny_length_squared_; }
     std::uint64_t safety_limit() const { return safety_limit_; }
 
-    // Steiner points added by all threads (for -S and the safety limit).
-    std::atomic<std::uint64_t> steiner_used{0};
+    // Steiner points added by all threads (for -S and the safety limit):
+    // settings().steiner_counter when given, else a counter of the run's.
+    std::atomic<std::uint64_t>& steiner_used;
 
 private:
+    std::atomic<std::uint64_t> own_steiner_used_{0};
     RefineSettings settings_;
     QualityTest quality_;
     const PlacementStrategy* strategy_;
@@ -173,6 +179,10 @@ inline bool queued_by_shape(const QualityTest& quality, const TriangleMeasures& 
 class LeafRefiner {
 public:
     LeafRefiner(RefineRun& run, mesh::Pool& pool, RefineReport& report);
+    // Counts its last Steiner points in the run's (the run outlives it).
+    ~LeafRefiner() { publish_steiner_points(); }
+    LeafRefiner(const LeafRefiner&) = delete;
+    LeafRefiner& operator=(const LeafRefiner&) = delete;
 
     // Assesses live triangle t and queues it in `leaf` if poor; queues its
     // encroached subsegments.

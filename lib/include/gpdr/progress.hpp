@@ -2,8 +2,9 @@
 // What a run is doing while it runs, for a program that shows progress (gpdr
 // on a terminal).  The library only records it and never prints: a stage
 // change or a finished file is one relaxed atomic store, and the count of
-// vertices during refinement is read from the mesh only when the program
-// asks, from a thread of its own, so recording costs nothing measurable.
+// vertices during refinement (kept by the refining threads in batches) is
+// read only when the program asks, from a thread of its own, so recording
+// costs nothing measurable.
 
 #include <atomic>
 #include <cstdint>

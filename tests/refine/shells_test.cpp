@@ -46,7 +46,13 @@ Split split_of(const triangulate::Pslg& pslg, std::uint32_t corner, std::uint32_
 triangulate::Pslg corner(double degrees) {
     triangulate::Pslg p;
     const double a = degrees * std::numbers::pi / 180.0;
-    p.points = {{-2, -2}, {2, -2}, {2, 2}, {-2, 2}, {0, 0}, {1.5, 0}, {1.5 * std::cos(a), 1.5 * std::sin(a)}};
+    p.points = {{-2, -2},
+                {2, -2},
+                {2, 2},
+                {-2, 2},
+                {0, 0},
+                {1.5, 0},
+                {1.5 * std::cos(a), 1.5 * std::sin(a)}};
     p.segments = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 4, 6};
     return p;
 }
@@ -82,7 +88,12 @@ TEST_CASE("a crossing point is a corner of its four pieces", "[refine][shells]")
         triangulate::Pslg p;
         const double a = degrees * std::numbers::pi / 180.0;
         const Point x{0.25, 0.5};
-        p.points = {{-3, -3}, {3, -3}, {3, 3}, {-3, 3}, {x.x - 1.5, x.y}, {x.x + 1.5, x.y},
+        p.points = {{-3, -3},
+                    {3, -3},
+                    {3, 3},
+                    {-3, 3},
+                    {x.x - 1.5, x.y},
+                    {x.x + 1.5, x.y},
                     {x.x - 1.5 * std::cos(a), x.y - 1.5 * std::sin(a)},
                     {x.x + 1.5 * std::cos(a), x.y + 1.5 * std::sin(a)}};
         p.segments = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 6, 7};

@@ -328,7 +328,8 @@ void Worker::route_subsegment(refine::QueuedSubsegment s, NodeId splitting) {
     Routed r;
     r.is_triangle = false;
     r.subsegment = s;
-    r.at = geometry::point_on_segment(a, b, refine::split_parameter(mesh_, s.edge));
+    r.at = geometry::point_on_segment(
+        a, b, refine::split_parameter(mesh_, s.edge, refiner_.quality().encroachment_lens()));
     deliver(r, splitting);
 }
 

@@ -295,7 +295,8 @@ bool LeafRefiner::split_subsegment(Leaf& leaf, EdgeRef e) {
     const VertexId a = mesh_.origin(e), b = mesh_.destination(e);
     const Point pa = mesh_.point(a), pb = mesh_.point(b);
     const double length_squared = geometry::squared_distance(pa, pb);
-    const Point p = geometry::point_on_segment(pa, pb, split_parameter(mesh_, e));
+    const Point p =
+        geometry::point_on_segment(pa, pb, split_parameter(mesh_, e, quality_.encroachment_lens()));
     if (length_squared < run_.tiny_length_squared() || p == pa || p == pb)
         return false;  // too short
     if (!leaf.owns(p)) {

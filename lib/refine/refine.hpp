@@ -214,6 +214,7 @@ public:
     void publish_steiner_points();
     // Optional (nullptr: none); not owned.
     void set_observer(MeshObserver* observer) { observer_ = observer; }
+    const QualityTest& quality() const { return quality_; }
 
 private:
     // Splits q's triangle, taken from slot `at` (where it goes back if its

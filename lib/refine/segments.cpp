@@ -22,11 +22,13 @@ bool subsegment_encroached(const mesh::Mesh& mesh, EdgeRef e, double lens) {
     return !across.is_none() && encroaches(a, b, mesh.point(mesh.apex(across)), lens);
 }
 
-bool acute_corner(const mesh::Mesh& mesh, EdgeRef e, VertexId a, VertexId b) {
+bool acute_corner(const mesh::Mesh& mesh, EdgeRef e, VertexId a, VertexId b, double lens) {
     if (mesh.kind(a) != VertexKind::input) return false;
     const Point& pa = mesh.point(a);
     const Point& pb = mesh.point(b);
     const double bx = pb.x - pa.x, by = pb.y - pa.y;
+    // cos(phi) > lens, without roots; a lens outside (0, 1) bounds at 90.
+    const double bound = lens > 0.0 && lens < 1.0 ? lens * lens : 0.0;
     bool acute = false;
     for_each_edge_at(mesh, e.triangle(), a, [&](EdgeRef f) {
         if (acute || !mesh.triangle(f.triangle()).is_subsegment(f.edge())) return;
@@ -35,16 +37,18 @@ bool acute_corner(const mesh::Mesh& mesh, EdgeRef e, VertexId a, VertexId b) {
         const Point& pc = mesh.point(c);
         const double cx = pc.x - pa.x, cy = pc.y - pa.y;
         // Below 90 degrees: positive dot product.  (A collinear continuation
-        // through a has a negative one.)
-        if (bx * cx + by * cy > 0) acute = true;
+        // through a has a negative one.)  Below 2 theta: also its square
+        // above lens^2 |b|^2 |c|^2.
+        const double dot = bx * cx + by * cy;
+        if (dot > 0 && dot * dot > bound * (bx * bx + by * by) * (cx * cx + cy * cy)) acute = true;
     });
     return acute;
 }
 
-double split_parameter(const mesh::Mesh& mesh, EdgeRef e) {
+double split_parameter(const mesh::Mesh& mesh, EdgeRef e, double lens) {
     const VertexId a = mesh.origin(e), b = mesh.destination(e);
-    const bool acute_a = acute_corner(mesh, e, a, b);
-    const bool acute_b = acute_corner(mesh, e, b, a);
+    const bool acute_a = acute_corner(mesh, e, a, b, lens);
+    const bool acute_b = acute_corner(mesh, e, b, a, lens);
     if (acute_a == acute_b) return 0.5;
     const double length = std::sqrt(geometry::squared_distance(mesh.point(a), mesh.point(b)));
     // The power of two nearest (in ratio) to half the length: the split is

@@ -5,10 +5,14 @@
 //     diametral circle (Ruppert 1995);
 //   - where to split it: the midpoint, or Ruppert's concentric shells (as in
 //     Shewchuk's Triangle) where the subsegment ends at an input vertex that
-//     another subsegment leaves at an acute angle: then the split point is
-//     at a power-of-two distance from that vertex, so splits on two
-//     segments meeting at a small angle fall on common circles and stop
-//     encroaching on each other;
+//     another subsegment leaves at an angle small enough for the split
+//     points of each to encroach the other: then the split point is at a
+//     power-of-two distance from that vertex, so splits on two segments
+//     meeting at a small angle fall on common circles and stop encroaching
+//     on each other.  Wider corners are split at midpoints: shells there
+//     buy nothing and cost triangles (a crossing point, where the four
+//     pieces meet at the crossing angle and its supplement, is such a
+//     vertex);
 //   - the small-input-angle rule (Shewchuk, "Delaunay refinement algorithms
 //     for triangular mesh generation", 2002, as Triangle applies it): a
 //     skinny triangle is left alone when both ends of its shortest edge are
@@ -96,13 +100,22 @@ inline bool encroaches(const geometry::Point& a, const geometry::Point& b, const
 // encroached by a vertex visible from it.
 bool subsegment_encroached(const mesh::Mesh& mesh, mesh::EdgeRef e, double lens = 0.0);
 
-// Whether another subsegment leaves input vertex a at an angle below 90
-// degrees to subsegment a-b (e is an edge with end a, in a triangle around a).
-bool acute_corner(const mesh::Mesh& mesh, mesh::EdgeRef e, mesh::VertexId a, mesh::VertexId b);
+// Whether another subsegment leaves input vertex a at an angle to
+// subsegment a-b at which a point of one can encroach a subsegment of the
+// other that ends at a (e is an edge with end a, in a triangle around a).
+// A point p on one ray at angle phi from the other sees a subsegment a-c
+// on it at less than 180 - phi degrees, and encroaches only above
+// 180 - 2 theta (the lens of encroaches()): so only phi < 2 theta, that is
+// cos(phi) > lens, can encroach.  With diametral circles (lens 0), or
+// where no vertex encroaches (lens >= 1: a rejected Steiner point still
+// splits), the bound is 90 degrees.
+bool acute_corner(const mesh::Mesh& mesh, mesh::EdgeRef e, mesh::VertexId a, mesh::VertexId b,
+                  double lens = 0.0);
 
 // Where to split subsegment e: the parameter along origin(e) -> destination(e)
-// (0.5, or a concentric-shell parameter as described above).
-double split_parameter(const mesh::Mesh& mesh, mesh::EdgeRef e);
+// (0.5, or a concentric-shell parameter as described above); `lens` as
+// encroaches() takes it.
+double split_parameter(const mesh::Mesh& mesh, mesh::EdgeRef e, double lens = 0.0);
 
 // Input segment ends by SubsegmentInfo::segment: 2 per segment (may be
 // empty; then segment ends are found by walking the subsegment chain).  A

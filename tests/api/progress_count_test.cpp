@@ -17,8 +17,7 @@
 using namespace gpdr;
 namespace fs = std::filesystem;
 
-TEST_CASE("progress counts the vertices refinement adds, on any number of threads",
-          "[progress]") {
+TEST_CASE("progress counts the vertices refinement adds, on any number of threads", "[progress]") {
     const std::string switches =
         GENERATE("-pq30a0.001j1", "-pq30a0.001j2", "-pq30a0.001j3", "-pa0.002j3");
     const bool nondeterministic = GENERATE(false, true);

@@ -98,16 +98,14 @@ inline constexpr unsigned default_granularity = 5;
 
 // How many σ levels below the split threshold (2 + g: Worker::should_split)
 // a leaf refines triangles poor by their angle before it splits, in the
-// leaf's order (shortest edges first; docs/refinement-order.md).  Up to 25
-// degrees none: the order across σ levels costs at most a few percent in
-// size at 20 degrees, and four levels made -j2 on a uniformly refined
-// square (-pq20a1e-6) 1.2-1.3 times slower.  Above, four: the windows of
-// σ levels make meshes up to several times larger at 33-34 degrees, and
-// four more levels bring -j2 within 13% of -j1 (within 4% but for one
-// model).  (Triangles poor only by size stay in the leaf's own levels.)
-inline int order_levels_beyond_split(double min_angle_degrees) {
-    return min_angle_degrees > 25 ? 4 : 0;
-}
+// leaf's order (shortest edges first; docs/refinement-order.md).  The
+// windows of σ levels make meshes larger than one thread's, up to several
+// times at 33-34 degrees and by up to 14% at 20-25; four more levels bring
+// -j2 within 13% of -j1 at 33-34 and within 6% at 20-25, for no measurable
+// time (the graded pipe and a uniformly refined square, -j2).  (Triangles
+// poor only by size stay in the leaf's own levels: taking them further made
+// area-bound runs 1.2-1.6 times slower for the same counts.)
+inline constexpr int order_levels_beyond_split = 4;
 
 // Refines `mesh` (the input refine::refine_mesh takes) in parallel.  Throws
 // what refine_mesh throws; a worker's exception is rethrown on the calling

@@ -399,15 +399,14 @@ bool Worker::run(NodeId leaf, std::int32_t tag, const std::vector<NodeId>& balan
     // Fig. 4 on the levels of the leaf's own triangles, i_min .. 1 + g (the
     // leaf splits once its work lies at 2 + g and below: should_split),
     // and, for triangles poor by their angle, order_levels_beyond_split
-    // more (above 25 degrees), all in the leaf's order (shortest edges
+    // more, all in the leaf's order (shortest edges
     // first over all of them: leaf.hpp); then the split, if its work now
     // belongs to its children.  (Size-only triangles stay in the leaf's own
     // levels: taking them four levels further made area-bound runs 1.2-1.6
     // times slower for the same counts.)
     const int granularity = static_cast<int>(run_.settings().granularity);
     const int own_levels = 1 + granularity;
-    const int last_level =
-        own_levels + order_levels_beyond_split(run_.settings().criteria.min_angle_degrees);
+    const int last_level = own_levels + order_levels_beyond_split;
     bool split_now = should_split(n, state);
     if (!split_now && !state.work.idle()) {
         const int lowest = state.work.lowest_level();

@@ -121,7 +121,8 @@ const Reference references[] = {
     {"pipe-section", 34, -1, 1490}, {"coastline", 30, -1, 3172},  {"coastline", 34, -1, 5678},
     {"star", 34, -1, 100},          {"@flow", 33, -1, 4850},      {"channel", 0, 0.4, 1591},
     {"pipe-section", 0, 0.4, 1146}, {"coastline", 0, 4800, 1616}, {"star", 0, 0.4, 324},
-    {"@flow", 0, 0.3, 2018},        {"@pipe", 0, 160, 2416},
+    {"@flow", 0, 0.3, 2018},        {"@pipe", 0, 160, 2416},      {"@pipe", 25, -1, 5862},
+    {"@flow", 25, -1, 2454},        {"channel", 25, -1, 369},
 };
 
 fs::path reference_file(const Reference& ref) {
@@ -161,7 +162,9 @@ TEST_CASE("two threads' meshes stay near one thread's", "[api][refine][order]") 
         const double ratio = double(triangle_count(two.mesh)) / double(triangle_count(one.mesh));
         INFO(ref.file << " -q" << ref.angle << ": -j2 " << triangle_count(two.mesh) << ", -j1 "
                       << triangle_count(one.mesh));
-        CHECK(ratio <= (ref.angle <= 30 ? 1.05 : 1.15));
+        // Measured: 0.93-1.06 at 25 degrees (1.14 with no levels beyond
+        // the split threshold), 0.96-1.01 at 30, 0.96-1.13 at 33-34.
+        CHECK(ratio <= (ref.angle <= 25 ? 1.08 : ref.angle <= 30 ? 1.05 : 1.15));
     }
 }
 

@@ -106,16 +106,12 @@ EdgeMarker edge_markers(const mesh::Mesh& mesh);
 // first; the edges (-e), the Voronoi diagram (-v) and the edge count (-g) are
 // taken before -o2 makes the triangles six-node, which it does last.
 struct PreparedOutputs {
-    std::vector<std::uint32_t> number;  // mesh vertex id -> node index (none: not output)
-    EdgeMarker mesh_marker;             // edge markers by mesh vertex ids
+    EdgeMarker mesh_marker;  // edge markers by mesh vertex ids
     EdgeSet edges;
     VoronoiDiagram voronoi;
     std::uint64_t edge_count = 0;
 };
 PreparedOutputs prepare_outputs(const Options& options, const mesh::Mesh& mesh, MeshArrays& arrays);
-
-// The subsegments of the mesh as .poly segments, in the arrays' numbering.
-SegmentSet subsegments_of(const MeshArrays& arrays, const PreparedOutputs& prepared);
 
 // The outputs the switches ask for, in memory: what write_outputs() would
 // write, without the files.  -j and -o2 change `arrays`, and its vectors are

@@ -202,6 +202,8 @@ std::vector<std::uint32_t> jettison_unused_vertices(MeshArrays& mesh) {
     nodes.attributes.resize(std::size_t{next} * attributes);
     if (nodes.has_markers()) nodes.markers.resize(next);
     for (std::uint32_t& v : mesh.triangles.corners) v = renumber[v];
+    // Segments join corners of triangles, which all keep their vertices.
+    for (std::uint32_t& v : mesh.segments.endpoints) v = renumber[v];
     for (std::size_t v = 0; v < renumber.size() && v < mesh.mesh_ids.size(); ++v)
         if (renumber[v] != none) mesh.mesh_ids[renumber[v]] = mesh.mesh_ids[v];
     if (mesh.mesh_ids.size() > next) mesh.mesh_ids.resize(next);

@@ -15,12 +15,6 @@
 
 namespace gpdr::api {
 
-// An edge of the mesh by its ends' mesh vertex ids (not node numbers).
-struct MeshEdge {
-    std::uint32_t from = 0, to = 0;
-    bool hull = false;  // no triangle on the other side
-};
-
 struct MeshArrays {
     NodeSet nodes;            // every vertex of the output (input vertices first)
     EleSet triangles;         // 3 corners each, counter-clockwise
@@ -37,10 +31,12 @@ struct MeshArrays {
     // triangle array (-e -n -v -g -o2 -j) need them materialised.
     std::size_t triangle_count = 0;
     std::function<io::EleSource()> stream;
-    // The mesh's subsegments (in the order of mesh::for_each_edge), and the
-    // number of its hull edges, found by the walk that numbers the
-    // triangles: the output's segments and -V's count need no other.
-    std::vector<MeshEdge> subsegment_edges;
+    // The mesh's subsegments as segments between nodes, with their markers
+    // (in the order of mesh::for_each_edge), and the number of its hull
+    // edges, found by the walk that numbers the triangles: the output's
+    // segments and -V's count need no other.  jettison_unused_vertices()
+    // keeps the segments in step.
+    SegmentSet segments;
     std::uint64_t hull_edge_count = 0;
 };
 

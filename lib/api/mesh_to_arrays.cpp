@@ -28,12 +28,72 @@ namespace {
 
 constexpr std::uint32_t none = NeighbourSet::none;
 
+// An edge of the mesh by its ends' mesh vertex ids (not node numbers).
+struct MeshEdge {
+    std::uint32_t from = 0, to = 0;
+    bool hull = false;  // no triangle on the other side
+};
+
+// Numbers by id, for the ids of some chunks only.  Parallel refinement
+// claims vertex ids and triangle slots in chunks by a fixed rule
+// (mesh/pool.hpp), so ids reach far past the vertices and triangles, with
+// whole chunks nobody claimed between: an array over every id would cost
+// several times the mesh's count (and as many page faults).  So only the
+// chunks that hold ids have numbers (none until set).
+template <unsigned Bits>
+class ChunkedNumbers {
+public:
+    static constexpr unsigned bits = Bits;
+    static constexpr std::uint32_t mask = (1u << bits) - 1;
+
+    ChunkedNumbers() = default;
+    // Chunks 0 .. chunks - 1, those for which has(c) holds.
+    template <class Has>
+    ChunkedNumbers(std::size_t chunks, const Has& has) : first_(chunks, absent) {
+        std::size_t next = 0;
+        for (std::uint32_t c = 0; c < chunks; ++c)
+            if (has(c)) {
+                first_[c] = next;
+                next += std::size_t{1} << bits;
+            }
+        numbers_.assign(next, none);
+    }
+    // Whether chunk c has numbers.
+    bool has_chunk(std::uint32_t c) const { return c < first_.size() && first_[c] != absent; }
+    std::uint32_t& operator[](std::uint32_t id) { return numbers_[at(id)]; }
+    std::uint32_t operator[](std::uint32_t id) const { return numbers_[at(id)]; }
+    const std::uint32_t* address(std::uint32_t id) const { return &numbers_[at(id)]; }
+
+private:
+    static constexpr std::size_t absent = ~std::size_t{0};
+    std::size_t at(std::uint32_t id) const { return first_[id >> bits] + (id & mask); }
+    std::vector<std::size_t> first_;  // per chunk: where its numbers start
+    std::vector<std::uint32_t> numbers_;
+};
+
+// Mesh vertex id -> node number (the claimed chunks, and the input's).
+using VertexNumbers = ChunkedNumbers<mesh::Mesh::vertex_chunk_bits>;
+VertexNumbers vertex_numbers(const mesh::Mesh& mesh, std::size_t input_count) {
+    const std::size_t chunks = std::max<std::size_t>(
+        mesh.vertex_chunks_claimed(), (input_count + VertexNumbers::mask) >> VertexNumbers::bits);
+    return VertexNumbers(chunks, [&](std::uint32_t c) {
+        return mesh.has_vertex_chunk(c) || (std::size_t{c} << VertexNumbers::bits) < input_count;
+    });
+}
+
+// Triangle slot -> triangle number (the claimed chunks).
+using TriangleNumbers = ChunkedNumbers<mesh::Mesh::triangle_chunk_bits>;
+TriangleNumbers triangle_numbers(const mesh::Mesh& mesh) {
+    return TriangleNumbers(mesh.triangle_chunks_claimed(),
+                           [&](std::uint32_t c) { return mesh.has_triangle_chunk(c); });
+}
+
 // Vertex numbers: the input vertices keep theirs (duplicates included, as
 // Triangle writes them); added vertices follow, in id order, skipping ids
 // claimed but never used.  Fills the coordinates in `nodes` and `mesh_ids`;
 // returns each mesh vertex's number (none for the skipped).
-std::vector<std::uint32_t> number_vertices(const mesh::Mesh& mesh, std::size_t input_count,
-                                           NodeSet& nodes, std::vector<std::uint32_t>& mesh_ids) {
+VertexNumbers number_vertices(const mesh::Mesh& mesh, std::size_t input_count, NodeSet& nodes,
+                              std::vector<std::uint32_t>& mesh_ids) {
     const std::uint32_t vertex_end = mesh.vertex_end();
     nodes.xy.resize(2 * input_count);
     for (std::uint32_t v = 0; v < input_count; ++v) {
@@ -41,13 +101,17 @@ std::vector<std::uint32_t> number_vertices(const mesh::Mesh& mesh, std::size_t i
         nodes.xy[2 * std::size_t{v}] = p.x;
         nodes.xy[2 * std::size_t{v} + 1] = p.y;
     }
-    std::vector<std::uint32_t> number(std::max<std::size_t>(vertex_end, input_count), none);
-    mesh_ids.reserve(number.size());
+    VertexNumbers number = vertex_numbers(mesh, input_count);
+    mesh_ids.reserve(input_count);
     for (std::uint32_t v = 0; v < input_count; ++v) {
         number[v] = v;
         mesh_ids.push_back(v);
     }
     for (std::uint32_t v = static_cast<std::uint32_t>(input_count); v < vertex_end; ++v) {
+        if ((v & VertexNumbers::mask) == 0 && !number.has_chunk(v >> VertexNumbers::bits)) {
+            v |= VertexNumbers::mask;  // the whole chunk (the loop's ++v goes past it)
+            continue;
+        }
         if (mesh.kind(mesh::VertexId{v}) == mesh::VertexKind::unused) continue;
         number[v] = static_cast<std::uint32_t>(mesh_ids.size());
         mesh_ids.push_back(v);
@@ -81,14 +145,13 @@ void copy_added_attributes(const mesh::Mesh& mesh, std::size_t input_count,
 // (for the stream below) and, with neighbours, each slot's number (compact,
 // in id order) in `triangle_number`, and lists the edges that the markers
 // and the segments come from: the hull's in `hull` and the subsegments in
-// out.subsegment_edges, each once, in the order of mesh::for_each_edge.
+// `subsegments`, each once, in the order of mesh::for_each_edge.
 constexpr std::uint32_t stride = 4096;
 std::uint32_t walk_triangles(const mesh::Mesh& mesh, bool with_neighbours,
-                             std::vector<std::uint32_t>& triangle_number,
-                             std::vector<std::uint32_t>& slot_of, std::vector<MeshEdge>& hull,
-                             MeshArrays& out) {
+                             TriangleNumbers& triangle_number, std::vector<std::uint32_t>& slot_of,
+                             std::vector<MeshEdge>& hull, std::vector<MeshEdge>& subsegments) {
     std::uint32_t count = 0;
-    if (with_neighbours) triangle_number.assign(mesh.triangle_end(), none);
+    if (with_neighbours) triangle_number = triangle_numbers(mesh);
     mesh::for_each_triangle(mesh, [&](mesh::TriangleId id, const mesh::Triangle& t) {
         if (count % stride == 0) slot_of.push_back(index(id));
         if (with_neighbours) triangle_number[index(id)] = count;
@@ -101,7 +164,7 @@ std::uint32_t walk_triangles(const mesh::Mesh& mesh, bool with_neighbours,
             if (!on_hull && !t.is_subsegment(k)) continue;
             const MeshEdge e{index(t.v[mesh::next3(k)]), index(t.v[mesh::prev3(k)]), on_hull};
             if (on_hull) hull.push_back(e);
-            if (t.is_subsegment(k)) out.subsegment_edges.push_back(e);
+            if (t.is_subsegment(k)) subsegments.push_back(e);
         }
     });
     return count;
@@ -129,18 +192,15 @@ std::uint32_t live_from(const mesh::Mesh& mesh, std::uint32_t slot) {
 // slots before it) are shared by the passes (the -V statistics and each
 // file).  Its read() starts at the slot of the triangle `stride` * k before
 // the first one asked for, so threads can read runs of triangles at once.
-std::function<io::EleSource()> triangle_stream(const mesh::Mesh& mesh,
-                                               std::vector<std::uint32_t> number,
+std::function<io::EleSource()> triangle_stream(const mesh::Mesh& mesh, VertexNumbers number,
                                                std::vector<std::uint32_t> slot_of,
                                                std::uint32_t count, std::uint32_t attribute_count,
                                                std::span<const double> region_attributes) {
     struct Shared {
-        std::vector<std::uint32_t> number;
+        VertexNumbers number;
         std::vector<std::uint32_t> slot_of;
     };
-    auto shared = std::make_shared<Shared>();
-    shared->number = std::move(number);
-    shared->slot_of = std::move(slot_of);
+    auto shared = std::make_shared<Shared>(Shared{std::move(number), std::move(slot_of)});
     // Fills triangle `t`'s corners and attributes.
     const auto put = [shared, attribute_count, region_attributes](
                          const mesh::Triangle& t, std::uint32_t* corners, double* attributes) {
@@ -177,7 +237,7 @@ std::function<io::EleSource()> triangle_stream(const mesh::Mesh& mesh,
                         slot = live_from(mesh, slot);
                         slots[i] = slot;
                         for (const mesh::VertexId v : mesh.triangle(mesh::TriangleId{slot}).v)
-                            __builtin_prefetch(&shared->number[index(v)]);
+                            __builtin_prefetch(shared->number.address(index(v)));
                     }
                     for (std::size_t i = 0; i < m; ++i, ++done)
                         put(mesh.triangle(mesh::TriangleId{slots[i]}), corners + 3 * done,
@@ -189,8 +249,8 @@ std::function<io::EleSource()> triangle_stream(const mesh::Mesh& mesh,
 
 // The triangles copied into out.triangles (and, with neighbours, their
 // neighbours renumbered by `triangle_number` into out.neighbours).
-void copy_triangles(const mesh::Mesh& mesh, const std::vector<std::uint32_t>& number,
-                    const std::vector<std::uint32_t>& triangle_number, bool with_neighbours,
+void copy_triangles(const mesh::Mesh& mesh, const VertexNumbers& number,
+                    const TriangleNumbers& triangle_number, bool with_neighbours,
                     std::span<const double> region_attributes, MeshArrays& out) {
     const std::uint32_t count = static_cast<std::uint32_t>(out.triangle_count);
     const std::uint32_t attribute_count = out.triangles.attribute_count;
@@ -211,7 +271,7 @@ void copy_triangles(const mesh::Mesh& mesh, const std::vector<std::uint32_t>& nu
 
 // Markers: keep non-zero input markers; otherwise a subsegment's marker,
 // then 1 for any boundary vertex.
-void set_vertex_markers(const mesh::Mesh& mesh, const std::vector<std::uint32_t>& number,
+void set_vertex_markers(const mesh::Mesh& mesh, const VertexNumbers& number,
                         const std::vector<MeshEdge>& hull, NodeSet& nodes) {
     nodes.markers.resize(nodes.size(), 0);
     std::vector<bool> fixed(nodes.size());
@@ -252,26 +312,33 @@ MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t inp
                           std::uint32_t attribute_count, std::span<const double> region_attributes,
                           bool with_neighbours, bool materialise) {
     MeshArrays out;
-    const std::vector<std::uint32_t> number =
-        number_vertices(mesh, input_count, nodes, out.mesh_ids);
+    VertexNumbers number = number_vertices(mesh, input_count, nodes, out.mesh_ids);
     copy_added_attributes(mesh, input_count, out.mesh_ids, nodes);
 
-    std::vector<std::uint32_t> triangle_number, slot_of;
-    std::vector<MeshEdge> hull;
+    TriangleNumbers triangle_number;
+    std::vector<std::uint32_t> slot_of;
+    std::vector<MeshEdge> hull, subsegments;
     const std::uint32_t count =
-        walk_triangles(mesh, with_neighbours, triangle_number, slot_of, hull, out);
+        walk_triangles(mesh, with_neighbours, triangle_number, slot_of, hull, subsegments);
     out.hull_edge_count = hull.size();
     if (with_neighbours) out.neighbours.neighbours.reserve(3 * std::size_t{count});
     out.triangle_count = count;
     out.triangles.corners_per_triangle = 3;
     out.triangles.attribute_count = attribute_count;
+    set_vertex_markers(mesh, number, hull, nodes);
+    const EdgeMarker marker = edge_markers(mesh);
+    out.segments.endpoints.reserve(2 * subsegments.size());
+    out.segments.markers.reserve(subsegments.size());
+    for (const MeshEdge& e : subsegments) {
+        out.segments.endpoints.push_back(number[e.from]);
+        out.segments.endpoints.push_back(number[e.to]);
+        out.segments.markers.push_back(marker(e.from, e.to, e.hull));
+    }
     if (materialise)
         copy_triangles(mesh, number, triangle_number, with_neighbours, region_attributes, out);
     else
-        out.stream = triangle_stream(mesh, number, std::move(slot_of), count, attribute_count,
-                                     region_attributes);
-
-    set_vertex_markers(mesh, number, hull, nodes);
+        out.stream = triangle_stream(mesh, std::move(number), std::move(slot_of), count,
+                                     attribute_count, region_attributes);
     out.nodes = std::move(nodes);
     return out;
 }

@@ -74,10 +74,8 @@ void write_all(const std::vector<FileJob>& jobs, io::FormatThreads& threads, Pro
 PreparedOutputs prepare_outputs(const Options& o, const mesh::Mesh& mesh, MeshArrays& arrays) {
     PreparedOutputs p;
     if (o.jettison) jettison_unused_vertices(arrays);
-    // Mesh vertex ids <-> node indices (arrays.mesh_ids is node -> mesh id).
+    // Node indices -> mesh vertex ids.
     const std::vector<std::uint32_t> mesh_id = arrays.mesh_ids;
-    p.number.assign(mesh.vertex_end(), NeighbourSet::none);
-    for (std::uint32_t v = 0; v < mesh_id.size(); ++v) p.number[mesh_id[v]] = v;
 
     // Edge markers are known by mesh vertex ids; the arrays may be renumbered.
     p.mesh_marker = edge_markers(mesh);
@@ -91,18 +89,6 @@ PreparedOutputs prepare_outputs(const Options& o, const mesh::Mesh& mesh, MeshAr
     if (o.write_off) p.edge_count = count_edges(arrays).edges;
     if (o.order == 2) make_second_order(arrays, marker);
     return p;
-}
-
-SegmentSet subsegments_of(const MeshArrays& arrays, const PreparedOutputs& prepared) {
-    SegmentSet segments;
-    segments.endpoints.reserve(2 * arrays.subsegment_edges.size());
-    segments.markers.reserve(arrays.subsegment_edges.size());
-    for (const MeshEdge& e : arrays.subsegment_edges) {
-        segments.endpoints.push_back(prepared.number[e.from]);
-        segments.endpoints.push_back(prepared.number[e.to]);
-        segments.markers.push_back(prepared.mesh_marker(e.from, e.to, e.hull));
-    }
-    return segments;
 }
 
 std::vector<std::string> write_outputs(const OutputRequest& request, const mesh::Mesh& mesh,
@@ -123,7 +109,7 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
     const std::uint64_t edge_count = prepared.edge_count;
     const bool for_others = o.write_vtk || o.write_gmsh || o.write_svg;
     const SegmentSet segments =
-        want_poly || o.write_gmsh || o.write_svg ? subsegments_of(arrays, prepared) : SegmentSet{};
+        want_poly || o.write_gmsh || o.write_svg ? arrays.segments : SegmentSet{};
     // What the files for other programs read: the arrays, and the
     // triangles once per pass they make (a fresh source each time).
     io::MeshExport exported;

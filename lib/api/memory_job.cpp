@@ -118,7 +118,7 @@ Input input_from_memory(const Options& options, MeshInput input) {
 MeshOutput output_in_memory(const Options& o, const mesh::Mesh& mesh, MeshArrays& arrays) {
     PreparedOutputs prepared = prepare_outputs(o, mesh, arrays);
     MeshOutput out;
-    if (o.poly || o.convex_hull) out.segments = arrays.segments;
+    if (o.poly || o.convex_hull) out.segments = std::move(arrays.segments);
     out.nodes = std::move(arrays.nodes);
     out.triangles = std::move(arrays.triangles);
     if (o.write_neighbours) out.neighbours = std::move(arrays.neighbours);

@@ -74,8 +74,8 @@ void write_all(const std::vector<FileJob>& jobs, io::FormatThreads& threads, Pro
 PreparedOutputs prepare_outputs(const Options& o, const mesh::Mesh& mesh, MeshArrays& arrays) {
     PreparedOutputs p;
     if (o.jettison) jettison_unused_vertices(arrays);
-    // Node indices -> mesh vertex ids.
-    const std::vector<std::uint32_t> mesh_id = arrays.mesh_ids;
+    // Node indices -> mesh vertex ids (what follows does not change them).
+    const std::vector<std::uint32_t>& mesh_id = arrays.mesh_ids;
 
     // Edge markers are known by mesh vertex ids; the arrays may be renumbered.
     p.mesh_marker = edge_markers(mesh);
@@ -108,8 +108,9 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
     const VoronoiDiagram& voronoi = prepared.voronoi;
     const std::uint64_t edge_count = prepared.edge_count;
     const bool for_others = o.write_vtk || o.write_gmsh || o.write_svg;
-    const SegmentSet segments =
-        want_poly || o.write_gmsh || o.write_svg ? arrays.segments : SegmentSet{};
+    static const SegmentSet no_segments;
+    const SegmentSet& segments =
+        want_poly || o.write_gmsh || o.write_svg ? arrays.segments : no_segments;
     // What the files for other programs read: the arrays, and the
     // triangles once per pass they make (a fresh source each time).
     io::MeshExport exported;

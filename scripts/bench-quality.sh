@@ -9,8 +9,9 @@
 # Models (default): poly-samples/flow.poly and pipe.poly, and the generated
 # models of tests/data/models (scripts/make-models.py writes them when they
 # are missing).  For each model, at each minimum angle of ANGLES (default
-# 20 25 30 32 33 34, -pq<angle>) and with an area bound alone (-pa<A>, A the
-# bounding box's area over AREA_TRIANGLES, default 4000):
+# 20 25 30 32 33 34, -pq<angle>), with an area bound alone (-pa<A>, A the
+# bounding box's area over AREA_TRIANGLES, default 4000), and with both at
+# 33 and 34 degrees (-pq33a<A>, -pq34a<A>):
 #   - table 1: triangles of gpdr -j1, -j2 and Triangle, the ratios -j1 and
 #     -j2 to Triangle (or -j2 to -j1 without Triangle), and the wall times;
 #     then the median and largest -j1 / Triangle ratio;
@@ -76,7 +77,7 @@ for m in "${models[@]}"; do
   name=$(basename "${m%.poly}")
   settings=()
   for a in "${angles[@]}"; do settings+=("pq$a"); done
-  settings+=("pa$(area_bound "$m")")
+  settings+=("pa$(area_bound "$m")" "pq33a$(area_bound "$m")" "pq34a$(area_bound "$m")")
   for s in "${settings[@]}"; do
     read -r n1 t1 <<<"$(run "$GPDR" "${s}j1" "$m")"
     read -r n2 t2 <<<"$(run "$GPDR" "${s}j2" "$m")"

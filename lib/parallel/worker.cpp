@@ -370,6 +370,20 @@ void Worker::split(NodeId leaf) {
     work.release();
 }
 
+// The granularity of a leaf at tree level L: g, but at most L.  Near the
+// root a round holds a handful of leaves, whose zones overlap (the root's
+// four children are refined one after another), so a leaf there that
+// refined g levels before splitting would refine them alone; splitting as
+// soon as relation (9) allows hands that work down to levels where many
+// leaves share a round.  Graded pipe, -j2: at c = 1e-3 work / span 2.1 ->
+// 5.4 and refinement 0.85 times as long; at c = 1e-4 work / span 10.1 ->
+// 12.5 (docs/performance.md).  Only size-only triangles are bounded by it:
+// the window for triangles poor by their angle stays g-wide (Worker::run),
+// so a small mesh is still refined by the root alone, in -j1's order.
+int Worker::granularity_at(const Node& n) const {
+    return std::min(static_cast<int>(run_.settings().granularity), static_cast<int>(n.level));
+}
+
 // Whether the leaf should split now, before refining further: relation (9)
 // holds for its children (its own count is 0) and the work waiting in it is
 // for triangles small enough to be the children's (σ >= 2 + g: a leaf
@@ -379,7 +393,7 @@ void Worker::split(NodeId leaf) {
 bool Worker::should_split(const Node& n, LeafState& state) {
     if (stopped || n.level >= max_level) return false;
     const int lowest = state.work.lowest_level();
-    const bool work_is_childrens = lowest >= 2 + static_cast<int>(run_.settings().granularity) ||
+    const bool work_is_childrens = lowest >= 2 + granularity_at(n) ||
                                    (lowest < 0 && state.work.subsegment_entries() != 0);
     if (!work_is_childrens) return false;
     // The count must be exact now: the batch may hold triangles to count.
@@ -397,16 +411,16 @@ bool Worker::run(NodeId leaf, std::int32_t tag, const std::vector<NodeId>& balan
     Node& n = tree_.node(leaf);
     LeafState& state = *n.state;
     // Fig. 4 on the levels of the leaf's own triangles, i_min .. 1 + g (the
-    // leaf splits once its work lies at 2 + g and below: should_split),
-    // and, for triangles poor by their angle, order_levels_beyond_split
-    // more, all in the leaf's order (shortest edges
-    // first over all of them: leaf.hpp); then the split, if its work now
-    // belongs to its children.  (Size-only triangles stay in the leaf's own
+    // leaf splits once its work lies at 2 + g and below: should_split; g
+    // as granularity_at has it), and, for triangles poor by their angle,
+    // down to 1 + g + order_levels_beyond_split with the full g, all in the
+    // leaf's order (shortest edges first over all of them: leaf.hpp); then
+    // the split, if its work now belongs to its children.  (Size-only triangles stay in the leaf's own
     // levels: taking them four levels further made area-bound runs 1.2-1.6
     // times slower for the same counts.)
-    const int granularity = static_cast<int>(run_.settings().granularity);
-    const int own_levels = 1 + granularity;
-    const int last_level = own_levels + order_levels_beyond_split;
+    const int own_levels = 1 + granularity_at(n);
+    const int last_level =
+        1 + static_cast<int>(run_.settings().granularity) + order_levels_beyond_split;
     bool split_now = should_split(n, state);
     if (!split_now && !state.work.idle()) {
         const int lowest = state.work.lowest_level();

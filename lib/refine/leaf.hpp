@@ -66,6 +66,11 @@ struct QueuedTriangle {
     // (Leaf::where), so that a split can hand it to a child without looking
     // at the mesh; 0: unknown.
     std::uint32_t where = 0;
+    // The leaf's count of pushes when it was queued (Leaf::push_poor): a
+    // quadtree leaf keeps a triangle's edge bin in its σ level, and takes the
+    // heads of equal edge bins of two levels in this order, so that an edge
+    // bin is first in, first out across the levels as a flat leaf's is.
+    std::uint32_t order = 0;
 };
 
 // The points a leaf owns (parallel layer): the half-open box
@@ -196,6 +201,7 @@ public:
 
     // ---- poor triangles ------------------------------------------------------
     void push_poor(QueuedTriangle q, PoorSlot at) {
+        q.order = pushes_++;
         bin(at).items.push_back(q);
         note_pushed(at, 1);
     }
@@ -255,6 +261,7 @@ public:
         }
         const int last = std::min(last_level, static_cast<int>(levels_.size()) - 1);
         long best = 0;
+        std::uint32_t best_order = 0;
         bool found = false;
         for (int j = lowest; j <= last; ++j) {
             Level* l = levels_[static_cast<std::size_t>(j)].get();
@@ -266,8 +273,11 @@ public:
             const int b = l->lowest_bin;
             if (b == size_bin && j > last_size) continue;
             const long k = b == size_bin ? (1L << 20) + j : top_bin_ - 4L * j - (bin_count - 1 - b);
-            if (!found || k < best) {
+            // (Equal keys: the same edge bin in two levels; the older head first.)
+            const std::uint32_t order = l->bins[b].items[l->bins[b].head].order;
+            if (!found || k < best || (k == best && order < best_order)) {
                 best = k;
+                best_order = order;
                 at = {j, l->lowest_bin};
                 found = true;
             }
@@ -291,6 +301,8 @@ public:
     void move_poor_to_children(Leaf* const children[4], UsedUp&& used_up) {
         std::vector<std::unique_ptr<Level>> levels;
         levels.swap(levels_);
+        // The entries keep their order: the children count on from it.
+        for (int c = 0; c < 4; ++c) children[c]->pushes_ = std::max(children[c]->pushes_, pushes_);
         lowest_ = bucket_count;
         poor_entries_ = 0;
         edge_entries_ = 0;
@@ -392,6 +404,7 @@ private:
         poor_entries_ += n;
     }
     std::vector<std::unique_ptr<Level>> levels_;  // by σ level, up to the deepest used
+    std::uint32_t pushes_ = 0;                     // QueuedTriangle::order
     int lowest_ = bucket_count;
     std::size_t poor_entries_ = 0;
     // Of them, in edge bins: while none, the window's first slot is the

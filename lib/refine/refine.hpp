@@ -170,9 +170,10 @@ public:
 };
 
 // Whether a poor triangle with measures m waits in a bin by its shortest
-// edge (else it is poor only by size and waits in its level's size bin).
+// edge (else it is poor only by size and waits in its level's size bin;
+// see QualityTest::stacks_size_only).
 inline bool queued_by_shape(const QualityTest& quality, const TriangleMeasures& m) {
-    return quality.bad_shape(m);
+    return !quality.stacks_size_only() || quality.bad_shape(m);
 }
 
 // One thread's refiner: owns the pool, insertion buffer and scratch.

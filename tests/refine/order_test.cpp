@@ -162,10 +162,10 @@ TEST_CASE("a quadtree leaf's window is taken by shortest edge across its levels"
         REQUIRE(leaf.pop_poor(at.level, q));
         taken.push_back(q.generation);
     }
-    // Edge bins first, by edge_bin(l²) whatever the level (2 and 1 share
-    // it: the lower level first), then the size bins lowest level first;
-    // σ 7 lies beyond the window.
-    CHECK(taken == std::vector<std::uint32_t>{2, 1, 0, 5, 4});
+    // Edge bins first, by edge_bin(l²) whatever the level (1 and 2 share
+    // it: first in, first out across the levels), then the size bins
+    // lowest level first; σ 7 lies beyond the window.
+    CHECK(taken == std::vector<std::uint32_t>{1, 2, 0, 5, 4});
     CHECK(leaf.lowest_level() == 7);
     Leaf flat = Leaf::flat();
     flat.push_poor(entry(0), flat.slot(1.0, 4.0, true));

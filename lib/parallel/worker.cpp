@@ -393,8 +393,8 @@ int Worker::granularity_at(const Node& n) const {
 bool Worker::should_split(const Node& n, LeafState& state) {
     if (stopped || n.level >= max_level) return false;
     const int lowest = state.work.lowest_level();
-    const bool work_is_childrens = lowest >= 2 + granularity_at(n) ||
-                                   (lowest < 0 && state.work.subsegment_entries() != 0);
+    const bool work_is_childrens =
+        lowest >= 2 + granularity_at(n) || (lowest < 0 && state.work.subsegment_entries() != 0);
     if (!work_is_childrens) return false;
     // The count must be exact now: the batch may hold triangles to count.
     sort_created();
@@ -415,9 +415,9 @@ bool Worker::run(NodeId leaf, std::int32_t tag, const std::vector<NodeId>& balan
     // as granularity_at has it), and, for triangles poor by their angle,
     // down to 1 + g + order_levels_beyond_split with the full g, all in the
     // leaf's order (shortest edges first over all of them: leaf.hpp); then
-    // the split, if its work now belongs to its children.  (Size-only triangles stay in the leaf's own
-    // levels: taking them four levels further made area-bound runs 1.2-1.6
-    // times slower for the same counts.)
+    // the split, if its work now belongs to its children.  (Size-only triangles stay in the leaf's
+    // own levels: taking them four levels further made area-bound runs 1.2-1.6 times slower for the
+    // same counts.)
     const int own_levels = 1 + granularity_at(n);
     const int last_level =
         1 + static_cast<int>(run_.settings().granularity) + order_levels_beyond_split;

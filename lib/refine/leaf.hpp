@@ -404,7 +404,7 @@ private:
         poor_entries_ += n;
     }
     std::vector<std::unique_ptr<Level>> levels_;  // by σ level, up to the deepest used
-    std::uint32_t pushes_ = 0;                     // QueuedTriangle::order
+    std::uint32_t pushes_ = 0;                    // QueuedTriangle::order
     int lowest_ = bucket_count;
     std::size_t poor_entries_ = 0;
     // Of them, in edge bins: while none, the window's first slot is the

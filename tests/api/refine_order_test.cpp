@@ -117,16 +117,29 @@ struct Reference {
     std::size_t triangle;
 };
 const Reference references[] = {
-    {"channel", 30, -1, 488},       {"channel", 34, -1, 751},     {"pipe-section", 30, -1, 1204},
-    {"pipe-section", 34, -1, 1490}, {"coastline", 30, -1, 3172},  {"coastline", 34, -1, 5678},
-    {"star", 34, -1, 100},          {"@flow", 33, -1, 4850},      {"channel", 0, 0.4, 1591},
-    {"pipe-section", 0, 0.4, 1146}, {"coastline", 0, 4800, 1616}, {"star", 0, 0.4, 324},
-    {"@flow", 0, 0.3, 2018},        {"@pipe", 0, 160, 2416},      {"@pipe", 25, -1, 5862},
-    {"@flow", 25, -1, 2454},        {"channel", 25, -1, 369},
+    {"channel", 30, -1, 488},
+    {"channel", 34, -1, 751},
+    {"pipe-section", 30, -1, 1204},
+    {"pipe-section", 34, -1, 1490},
+    {"coastline", 30, -1, 3172},
+    {"coastline", 34, -1, 5678},
+    {"star", 34, -1, 100},
+    {"@flow", 33, -1, 4850},
+    {"channel", 0, 0.4, 1591},
+    {"pipe-section", 0, 0.4, 1146},
+    {"coastline", 0, 4800, 1616},
+    {"star", 0, 0.4, 324},
+    {"@flow", 0, 0.3, 2018},
+    {"@pipe", 0, 160, 2416},
+    {"@pipe", 25, -1, 5862},
+    {"@flow", 25, -1, 2454},
+    {"channel", 25, -1, 369},
     // An angle bound above 30 degrees with an area bound: the order of the
     // triangles poor only by size decides the size too (a stack of them
     // gave 1.73 times Triangle's count on flow at 34 degrees).
-    {"@flow", 34, 0.075, 10305},    {"channel", 34, 0.1, 10136},  {"coastline", 34, 1192.8, 8072},
+    {"@flow", 34, 0.075, 10305},
+    {"channel", 34, 0.1, 10136},
+    {"coastline", 34, 1192.8, 8072},
     {"@pipe", 33, 40, 13230},
 };
 

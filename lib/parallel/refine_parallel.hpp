@@ -100,11 +100,13 @@ inline constexpr unsigned default_granularity = 5;
 // a leaf refines triangles poor by their angle before it splits, in the
 // leaf's order (shortest edges first; docs/refinement-order.md).  The
 // windows of σ levels make meshes larger than one thread's, up to several
-// times at 33-34 degrees and by up to 14% at 20-25; four more levels bring
-// -j2 within 13% of -j1 at 33-34 and within 6% at 20-25, for no measurable
-// time (the graded pipe and a uniformly refined square, -j2).  (Triangles
-// poor only by size stay in the leaf's own levels: taking them further made
-// area-bound runs 1.2-1.6 times slower for the same counts.)
+// times at 33-34 degrees and by up to 14% at 20-25; with four more levels
+// (and equal edge bins first in, first out across the levels) -j2 gives
+// -j1's counts on the models of bench-quality.sh and stays within 1.1% of
+// them up to 30 degrees on meshes of 100,000 triangles, 7% at 32-34, for no
+// measurable time (the graded pipe and a uniformly refined square, -j2).
+// (Triangles in the size bin stay in the leaf's own levels: taking them
+// further made area-bound runs 1.2-1.6 times slower for the same counts.)
 inline constexpr int order_levels_beyond_split = 4;
 
 // Refines `mesh` (the input refine::refine_mesh takes) in parallel.  Throws

@@ -415,9 +415,11 @@ bool Worker::run(NodeId leaf, std::int32_t tag, const std::vector<NodeId>& balan
     // as granularity_at has it), and, for triangles poor by their angle,
     // down to 1 + g + order_levels_beyond_split with the full g, all in the
     // leaf's order (shortest edges first over all of them: leaf.hpp); then
-    // the split, if its work now belongs to its children.  (Size-only triangles stay in the leaf's
-    // own levels: taking them four levels further made area-bound runs 1.2-1.6 times slower for the
-    // same counts.)
+    // the split, if its work now belongs to its children.  (Size-only
+    // triangles in the size bin, up to 30 degrees, stay in the leaf's own
+    // levels: taking them four levels further made area-bound runs 1.2-1.6
+    // times slower for the same counts.  Above 30 degrees they wait in the
+    // edge bins and go with the angle window: QualityTest::stacks_size_only.)
     const int own_levels = 1 + granularity_at(n);
     const int last_level =
         1 + static_cast<int>(run_.settings().granularity) + order_levels_beyond_split;

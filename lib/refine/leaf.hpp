@@ -15,7 +15,8 @@
 // l², in bins a factor √2 wide (edge_bin), the bin of the shortest edges
 // first, and first-in-first-out within a bin (a triangle whose split was
 // put off goes back to the tail of its bin).  Triangles that are poor only
-// by size (area bound or user test, no bad angle) wait in a separate
+// by size (area bound or user test, no bad angle) wait, up to 30 degrees
+// (QualityTest::stacks_size_only), in a separate
 // last-in-first-out bin after every other bin of their level, the size
 // bin: the newest was just made and is still in the cache.  (Taking them
 // by their edges' bins instead made the refinement of the graded pipe and

@@ -146,6 +146,33 @@ TEST_CASE("a split keeps each bin's order in the children", "[refine][order]") {
     CHECK(drain(c0) == std::vector<std::uint32_t>{0, 2, 1, 3, 4, 5});
 }
 
+TEST_CASE("after a split, a child takes equal edge bins first in, first out", "[refine][order]") {
+    Leaf parent(8.0);
+    parent.set_corner({0.0, 0.0});
+    Leaf c0(4.0), c1(4.0), c2(4.0), c3(4.0);
+    c0.set_corner({0.0, 0.0});
+    Leaf* const children[4] = {&c0, &c1, &c2, &c3};
+    // Two entries in child 1's quarter, then entry 2 in child 0's: σ 2 in
+    // the parent (r = 1.5), 1 in the child; l² 0.25.
+    for (std::uint32_t i = 0; i < 3; ++i) {
+        QueuedTriangle q = entry(i);
+        q.where = parent.where({i < 2 ? 5.0 : 1.0, 1.0});
+        parent.push_poor(q, parent.slot(2.25, 0.25, true));
+    }
+    parent.move_poor_to_children(children, [](QueuedTriangle) {});
+    // Queued in the child after the split, at σ 2 there (r = 0.75), in the
+    // same edge bin: it comes after entry 2, which the child counts on from.
+    c0.push_poor(entry(3), c0.slot(0.5625, 0.25, true));
+    std::vector<std::uint32_t> taken;
+    PoorSlot at;
+    while (c0.first_slot(Leaf::bucket_count - 1, at)) {
+        QueuedTriangle q{};
+        REQUIRE(c0.pop_poor(at.level, q));
+        taken.push_back(q.generation);
+    }
+    CHECK(taken == std::vector<std::uint32_t>{2, 3});
+}
+
 TEST_CASE("a quadtree leaf's window is taken by shortest edge across its levels",
           "[refine][order]") {
     Leaf leaf(16.0);

@@ -174,10 +174,14 @@ void LeafRefiner::classify(Leaf& leaf, TriangleId t, const TriangleMeasures& m) 
         const QueuedTriangle q{t, r.generation, leaf.where(m.circle.centre)};
         // Poor triangles are routed by their circumcentre; the Steiner point
         // itself is checked again before it is inserted.
-        if (leaf.owns(m.circle.centre))
-            leaf.push_poor(
-                q, leaf.slot(m.circle.radius_squared, m.shortest.length_squared, by_shape(m)));
-        else
+        if (leaf.owns(m.circle.centre)) {
+            const PoorSlot at =
+                leaf.slot(m.circle.radius_squared, m.shortest.length_squared, by_shape(m));
+            if (holding_size_only_ && at.bin == Leaf::size_bin)
+                size_only_.push_back({q, at, m.shortest.length_squared});
+            else
+                leaf.push_poor(q, at);
+        } else
             leaf.handed_off_triangles.push_back(q);
     }
     if ((r.flags & 7u) == 0) return;
@@ -197,6 +201,7 @@ void LeafRefiner::classify_created(Leaf& leaf) {
     report_.triangles_created += buffer_.created.size();
     if (observer_ != nullptr) observer_->tagged_triangles_gone(buffer_.tagged_gone);
     buffer_.tagged_gone.clear();  // (told once)
+    holding_size_only_ = quality_.sorts_size_only();
     for (TriangleId id : buffer_.created) {
         const mesh::Triangle& r = mesh_.triangle(id);
         const TriangleMeasures m =
@@ -204,6 +209,34 @@ void LeafRefiner::classify_created(Leaf& leaf) {
         if (observer_ != nullptr) observer_->triangle_created(id, r.generation, m.circle);
         classify(leaf, id, m);
     }
+    holding_size_only_ = false;
+    queue_size_only(leaf);
+}
+
+// The size bin is last in, first out: the triangles one insertion made
+// would be taken newest first, in the order the cavity's walk happened to
+// list them.  Queued with the longest shortest edge first, they are taken
+// shortest first, as Triangle's edge bins would take them.  With -a or -u
+// alone or up to 26 degrees (QualityTest::sorts_size_only) that brings the
+// meshes from 0.4-0.7% above the edge bins' to 0.0-0.3% (sums over the
+// generated models), for 0-9% more refinement time than the plain stack
+// on one thread, where the edge bins cost 30% (docs/refinement-order.md).
+void LeafRefiner::queue_size_only(Leaf& leaf) {
+    if (size_only_.empty()) return;
+    // Equal edges keep the order they were made in (the sort is stable).
+    const auto longer = [](const SizeOnly& a, const SizeOnly& b) {
+        return a.shortest_squared > b.shortest_squared;
+    };
+    if (size_only_.size() <= 16) {
+        // An insertion makes a handful: no call, no buffer.
+        for (std::size_t i = 1; i < size_only_.size(); ++i)
+            for (std::size_t k = i; k > 0 && longer(size_only_[k], size_only_[k - 1]); --k)
+                std::swap(size_only_[k], size_only_[k - 1]);
+    } else {
+        std::stable_sort(size_only_.begin(), size_only_.end(), longer);
+    }
+    for (const SizeOnly& e : size_only_) leaf.push_poor(e.q, e.at);
+    size_only_.clear();
 }
 
 bool LeafRefiner::may_split(EdgeRef e) const {

@@ -237,7 +237,11 @@ private:
     bool may_split(mesh::EdgeRef e) const;
     bool budget_left();
     void count_steiner_point();
+    // Classifies the triangles of buffer_.created; the ones poor only by
+    // size that go to a size bin are queued together at the end, the one
+    // with the shortest edge last (queue_size_only).
     void classify_created(Leaf& leaf);
+    void queue_size_only(Leaf& leaf);
     void give_up(QueuedTriangle q, std::uint8_t reason) {
         given_up_.push_back({q.id, q.generation, reason});
     }
@@ -254,6 +258,14 @@ private:
     std::vector<GivenUp> given_up_;
     MeshObserver* observer_ = nullptr;
     std::uint64_t unpublished_steiner_ = 0;
+    // Size-bin entries held back while classify_created runs.
+    struct SizeOnly {
+        QueuedTriangle q;
+        PoorSlot at;
+        double shortest_squared;
+    };
+    std::vector<SizeOnly> size_only_;
+    bool holding_size_only_ = false;
 };
 
 // The final pass of a run: counts the poor triangles left in `mesh` by

@@ -72,12 +72,14 @@ std::vector<std::string> refine(mesh::Mesh& mesh, const refine::RefineSettings& 
     p.threads = o.threads;
     p.granularity = o.granularity;
     // -j1 runs the sequential refiner (one leaf, no quadtree, Triangle's
-    // order).  So does -S, whose limit is exact only on one thread.  -j0
-    // on a machine with one hardware thread runs the rounds on it: the
-    // same mesh as -j0 anywhere else.
-    p.one_leaf_for_one_thread = o.threads == 1 || o.steiner_limit;
+    // order).  So does -S, whose limit is exact only on one thread, and so
+    // does an angle bound above 30 degrees (max_quadtree_angle).  -j0 on a
+    // machine with one hardware thread runs the rounds on it: the same mesh
+    // as -j0 anywhere else.
+    const bool high_angle = o.quality && o.min_angle > parallel::max_quadtree_angle;
+    p.one_leaf_for_one_thread = o.threads == 1 || o.steiner_limit || high_angle;
     p.deterministic = !o.nondeterministic;
-    if (o.steiner_limit) p.threads = 1;
+    if (o.steiner_limit || high_angle) p.threads = 1;
     parallel::ParallelReport r;
     parallel::refine_parallel(mesh, settings, p, r);
 #if defined(__GLIBC__)
@@ -90,6 +92,12 @@ std::vector<std::string> refine(mesh::Mesh& mesh, const refine::RefineSettings& 
 #endif
     report = std::move(r.refine);
     std::vector<std::string> lines;
+    if (high_angle && o.threads != 1) {
+        lines.emplace_back();
+        lines.push_back(fmt::format(
+            "Refinement on one thread, in Triangle's order: the angle bound is above {} degrees",
+            parallel::max_quadtree_angle));
+    }
     if (r.threads <= 1 && r.rounds.empty()) return lines;
     // The GPDR paper's Fig. 5 (right): where each thread's time went.
     const auto line = [](const char* who, unsigned i, const parallel::ThreadTimes& t) {

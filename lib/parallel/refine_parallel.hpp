@@ -109,6 +109,17 @@ inline constexpr unsigned default_granularity = 5;
 // further made area-bound runs 1.2-1.6 times slower for the same counts.)
 inline constexpr int order_levels_beyond_split = 4;
 
+// The largest angle bound (-q) the quadtree refines; above it every thread
+// count runs the sequential refiner, in Triangle's order.  Above 30 degrees
+// the order decides whether refinement ends at all, and the leaves' windows
+// of σ levels take large triangles before small ones: -j2 made up to 1.65
+// times -j1's triangles at 31-33 degrees on a coastline of 20,000 segments,
+// and from 3.7 to 69 times at 34 (the crossing model under -a; a coastline
+// of 100,000 segments), where the safety stop ends it.  With an area bound
+// the leaves near the root took nearly all the work anyway (flow
+// -pq33a2e-4: -j2 1.2 times -j1's time).  docs/refinement-order.md.
+inline constexpr double max_quadtree_angle = 30.0;
+
 // Refines `mesh` (the input refine::refine_mesh takes) in parallel.  Throws
 // what refine_mesh throws; a worker's exception is rethrown on the calling
 // thread after all threads have stopped.

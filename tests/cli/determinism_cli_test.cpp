@@ -97,3 +97,31 @@ TEST_CASE("a triunsuitable() plug-in's mesh is the same on any number of threads
             CHECK(ele == expected);
     }
 }
+
+TEST_CASE("above 30 degrees every thread count writes one thread's mesh", "[cli][determinism]") {
+    // Meshes where the quadtree's order gave 1.06 times one thread's
+    // triangles (max_quadtree_angle).
+    const std::vector<Run> runs = {
+        {"tests/data/models/channel.poly", "-pq34a0.02"},
+        {"tests/data/models/crossing.poly", "-pq33a0.002"},
+    };
+    for (const Run& r : runs) {
+        const fs::path input = source_dir() / r.input;
+        const std::string name = input.filename().string();
+        INFO(r.input << " " << r.switches);
+        std::string expected;
+        for (const char* threads : {"-j1", "-j2"}) {
+            TempDir dir;
+            fs::copy_file(input, dir / name);
+            const RunResult result = run_gpdr(dir, "-Q " + r.switches + " " + threads + " " + name);
+            INFO(result.err);
+            REQUIRE(result.status == 0);
+            const std::string stem = input.stem().string();
+            const std::string mesh = dir.read(stem + ".1.node") + dir.read(stem + ".1.ele");
+            if (expected.empty())
+                expected = mesh;
+            else
+                CHECK(mesh == expected);
+        }
+    }
+}

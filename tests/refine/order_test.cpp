@@ -27,6 +27,18 @@ std::vector<std::uint32_t> drain(Leaf& leaf) {
     return out;
 }
 
+// What a run with window levels lowest .. last_level takes, in order
+// (Leaf::first_slot across the levels, as LeafRefiner::refine_levels).
+std::vector<std::uint32_t> drain_window(Leaf& leaf, int last_level) {
+    std::vector<std::uint32_t> out;
+    for (PoorSlot at; leaf.first_slot(last_level, at);) {
+        QueuedTriangle q{};
+        REQUIRE(leaf.pop_poor(at.level, q));
+        out.push_back(q.generation);
+    }
+    return out;
+}
+
 }  // namespace
 
 TEST_CASE("edge_bin is the floor of the logarithm to base sqrt 2", "[refine][order]") {
@@ -163,32 +175,19 @@ TEST_CASE("after a split, a child takes equal edge bins first in, first out", "[
     // Queued in the child after the split, at σ 2 there (r = 0.75), in the
     // same edge bin: it comes after entry 2, which the child counts on from.
     c0.push_poor(entry(3), c0.slot(0.5625, 0.25, true));
-    std::vector<std::uint32_t> taken;
-    PoorSlot at;
-    while (c0.first_slot(Leaf::bucket_count - 1, at)) {
-        QueuedTriangle q{};
-        REQUIRE(c0.pop_poor(at.level, q));
-        taken.push_back(q.generation);
-    }
-    CHECK(taken == std::vector<std::uint32_t>{2, 3});
+    CHECK(drain_window(c0, Leaf::bucket_count - 1) == std::vector<std::uint32_t>{2, 3});
 }
 
 TEST_CASE("a quadtree leaf's window is taken by shortest edge across its levels",
           "[refine][order]") {
     Leaf leaf(16.0);
-    leaf.push_poor(entry(0), leaf.slot(64.0, 16.0, true));   // σ 1, l² 16
-    leaf.push_poor(entry(1), leaf.slot(4.0, 1.0, true));     // σ 3, l² 1
-    leaf.push_poor(entry(2), leaf.slot(64.0, 1.0, true));    // σ 1, l² 1
-    leaf.push_poor(entry(3), leaf.slot(0.01, 0.001, true));  // σ 7, l² 0.001
-    leaf.push_poor(entry(4), leaf.slot(4.0, 2.0, false));    // σ 3, size only
-    leaf.push_poor(entry(5), leaf.slot(64.0, 2.0, false));   // σ 1, size only
-    std::vector<std::uint32_t> taken;
-    PoorSlot at;
-    while (leaf.first_slot(4, at)) {  // the window: σ 1 .. 4
-        QueuedTriangle q{};
-        REQUIRE(leaf.pop_poor(at.level, q));
-        taken.push_back(q.generation);
-    }
+    leaf.push_poor(entry(0), leaf.slot(64.0, 16.0, true));           // σ 1, l² 16
+    leaf.push_poor(entry(1), leaf.slot(4.0, 1.0, true));             // σ 3, l² 1
+    leaf.push_poor(entry(2), leaf.slot(64.0, 1.0, true));            // σ 1, l² 1
+    leaf.push_poor(entry(3), leaf.slot(0.01, 0.001, true));          // σ 7, l² 0.001
+    leaf.push_poor(entry(4), leaf.slot(4.0, 2.0, false));            // σ 3, size only
+    leaf.push_poor(entry(5), leaf.slot(64.0, 2.0, false));           // σ 1, size only
+    const std::vector<std::uint32_t> taken = drain_window(leaf, 4);  // the window: σ 1 .. 4
     // Edge bins first, by edge_bin(l²) whatever the level (1 and 2 share
     // it: first in, first out across the levels), then the size bins
     // lowest level first; σ 7 lies beyond the window.
@@ -196,6 +195,7 @@ TEST_CASE("a quadtree leaf's window is taken by shortest edge across its levels"
     CHECK(leaf.lowest_level() == 7);
     Leaf flat = Leaf::flat();
     flat.push_poor(entry(0), flat.slot(1.0, 4.0, true));
+    PoorSlot at;
     CHECK_FALSE(flat.first_slot(-1, at));
     CHECK(flat.first_slot(Leaf::bucket_count, at));
 }

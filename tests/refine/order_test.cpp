@@ -27,6 +27,18 @@ std::vector<std::uint32_t> drain(Leaf& leaf) {
     return out;
 }
 
+// A leaf of side 8 at the origin and its four children, as a split makes
+// them (only child 0's corner is needed: the tests read that child).
+struct Family {
+    Leaf parent{8.0};
+    Leaf children[4] = {Leaf(4.0), Leaf(4.0), Leaf(4.0), Leaf(4.0)};
+    Leaf* const child_pointers[4] = {&children[0], &children[1], &children[2], &children[3]};
+    Family() {
+        parent.set_corner({0.0, 0.0});
+        children[0].set_corner({0.0, 0.0});
+    }
+};
+
 // What a run with window levels lowest .. last_level takes, in order
 // (Leaf::first_slot across the levels, as LeafRefiner::refine_levels).
 std::vector<std::uint32_t> drain_window(Leaf& leaf, int last_level) {
@@ -137,11 +149,8 @@ TEST_CASE("a quadtree leaf orders by σ level, then by shortest edge", "[refine]
 }
 
 TEST_CASE("a split keeps each bin's order in the children", "[refine][order]") {
-    Leaf parent(8.0);
-    parent.set_corner({0.0, 0.0});
-    Leaf c0(4.0), c1(4.0), c2(4.0), c3(4.0);
-    c0.set_corner({0.0, 0.0});
-    Leaf* const children[4] = {&c0, &c1, &c2, &c3};
+    Family f;
+    Leaf &parent = f.parent, &c0 = f.children[0];
     // All in child 0's square: σ 2 in the parent (r = 1.5), 1 in the child.
     for (std::uint32_t i = 0; i < 6; ++i) {
         QueuedTriangle q = entry(i);
@@ -149,7 +158,7 @@ TEST_CASE("a split keeps each bin's order in the children", "[refine][order]") {
         parent.push_poor(q, parent.slot(2.25, i % 2 ? 0.5 : 0.01, i < 4));
     }
     int used_up = 0;
-    parent.move_poor_to_children(children, [&](QueuedTriangle) { ++used_up; });
+    parent.move_poor_to_children(f.child_pointers, [&](QueuedTriangle) { ++used_up; });
     CHECK(used_up == 0);
     CHECK(parent.poor_entries() == 0);
     CHECK(c0.lowest_level() == 1);
@@ -159,11 +168,8 @@ TEST_CASE("a split keeps each bin's order in the children", "[refine][order]") {
 }
 
 TEST_CASE("after a split, a child takes equal edge bins first in, first out", "[refine][order]") {
-    Leaf parent(8.0);
-    parent.set_corner({0.0, 0.0});
-    Leaf c0(4.0), c1(4.0), c2(4.0), c3(4.0);
-    c0.set_corner({0.0, 0.0});
-    Leaf* const children[4] = {&c0, &c1, &c2, &c3};
+    Family f;
+    Leaf &parent = f.parent, &c0 = f.children[0];
     // Two entries in child 1's quarter, then entry 2 in child 0's: σ 2 in
     // the parent (r = 1.5), 1 in the child; l² 0.25.
     for (std::uint32_t i = 0; i < 3; ++i) {
@@ -171,7 +177,7 @@ TEST_CASE("after a split, a child takes equal edge bins first in, first out", "[
         q.where = parent.where({i < 2 ? 5.0 : 1.0, 1.0});
         parent.push_poor(q, parent.slot(2.25, 0.25, true));
     }
-    parent.move_poor_to_children(children, [](QueuedTriangle) {});
+    parent.move_poor_to_children(f.child_pointers, [](QueuedTriangle) {});
     // Queued in the child after the split, at σ 2 there (r = 0.75), in the
     // same edge bin: it comes after entry 2, which the child counts on from.
     c0.push_poor(entry(3), c0.slot(0.5625, 0.25, true));

@@ -222,7 +222,6 @@ public:
         if (j < 0 || static_cast<std::size_t>(j) >= levels_.size()) return false;
         Level* l = levels_[static_cast<std::size_t>(j)].get();
         if (!l || l->entries == 0) return false;
-        while (l->bins[l->lowest_bin].empty()) ++l->lowest_bin;
         if (at != nullptr) *at = {j, l->lowest_bin};
         Bin& b = l->bins[l->lowest_bin];
         if (l->lowest_bin == size_bin) {
@@ -240,8 +239,13 @@ public:
             }
         }
         if (l->lowest_bin != size_bin) --edge_entries_;
-        if (--l->entries == 0) l->lowest_bin = bin_count + 1;
         --poor_entries_;
+        if (--l->entries == 0) {
+            l->lowest_bin = bin_count + 1;
+        } else {
+            while (l->bins[l->lowest_bin].empty()) ++l->lowest_bin;
+        }
+        if (!flat_) note_head(j, *l);
         return true;
     }
     std::size_t poor_entries() const { return poor_entries_; }
@@ -257,35 +261,25 @@ public:
         const int last_size = std::min(last_level, last_size_level);
         if (flat_ || (edge_entries_ == 0 && lowest <= last_size)) {
             // (Without edge entries, the lowest level's size bin.)
-            Level* l = levels_[static_cast<std::size_t>(lowest)].get();
-            while (l->bins[l->lowest_bin].empty()) ++l->lowest_bin;
-            at = {lowest, l->lowest_bin};
+            at = {lowest, levels_[static_cast<std::size_t>(lowest)]->lowest_bin};
             return true;
         }
+        // The least head over the levels (heads_: one word a level, so that
+        // a window of many levels costs a short scan, not a visit to each
+        // level's bins).
         const int last = std::min(last_level, static_cast<int>(levels_.size()) - 1);
-        long best = 0;
-        std::uint32_t best_order = 0;
-        bool found = false;
+        std::uint64_t best = empty_head;
+        int best_level = -1;
         for (int j = lowest; j <= last; ++j) {
-            Level* l = levels_[static_cast<std::size_t>(j)].get();
-            if (!l || l->entries == 0) continue;
-            while (l->bins[l->lowest_bin].empty()) ++l->lowest_bin;
-            // Edge bins by edge_bin(l²), the bin 0 of a level standing for
-            // bin_count - 1 below its top (Leaf::slot); size bins after
-            // every edge bin, lowest level first.
-            const int b = l->lowest_bin;
-            if (b == size_bin && j > last_size) continue;
-            const long k = b == size_bin ? (1L << 20) + j : top_bin_ - 4L * j - (bin_count - 1 - b);
-            // (Equal keys: the same edge bin in two levels; the older head first.)
-            const std::uint32_t order = l->bins[b].items[l->bins[b].head].order;
-            if (!found || k < best || (k == best && order < best_order)) {
-                best = k;
-                best_order = order;
-                at = {j, l->lowest_bin};
-                found = true;
+            const std::uint64_t h = heads_[static_cast<std::size_t>(j)];
+            if (h < best && (h < size_heads || j <= last_size)) {
+                best = h;
+                best_level = j;
             }
         }
-        return found;
+        if (best_level < 0) return false;
+        at = {best_level, levels_[static_cast<std::size_t>(best_level)]->lowest_bin};
+        return true;
     }
 
     // A split (parallel layer): moves every poor triangle to the child its
@@ -304,6 +298,7 @@ public:
     void move_poor_to_children(Leaf* const children[4], UsedUp&& used_up) {
         std::vector<std::unique_ptr<Level>> levels;
         levels.swap(levels_);
+        heads_.clear();
         // The entries keep their order: the children count on from it.
         for (int c = 0; c < 4; ++c) children[c]->pushes_ = std::max(children[c]->pushes_, pushes_);
         lowest_ = bucket_count;
@@ -357,6 +352,7 @@ public:
     // entries left are dropped.
     void release() {
         std::vector<std::unique_ptr<Level>>().swap(levels_);
+        std::vector<std::uint64_t>().swap(heads_);
         lowest_ = bucket_count;
         poor_entries_ = 0;
         edge_entries_ = 0;
@@ -392,8 +388,10 @@ private:
     // The bin at `at`, made if missing; entries pushed straight into it are
     // then counted by note_pushed.
     Bin& bin(PoorSlot at) {
-        if (static_cast<std::size_t>(at.level) >= levels_.size())
+        if (static_cast<std::size_t>(at.level) >= levels_.size()) {
             levels_.resize(static_cast<std::size_t>(at.level) + 1);
+            if (!flat_) heads_.resize(levels_.size(), empty_head);
+        }
         auto& l = levels_[static_cast<std::size_t>(at.level)];
         if (!l) l = std::make_unique<Level>();
         return l->bins[static_cast<std::size_t>(at.bin)];
@@ -401,13 +399,40 @@ private:
     void note_pushed(PoorSlot at, std::size_t n) {
         Level& l = *levels_[static_cast<std::size_t>(at.level)];
         l.entries += n;
-        if (at.bin < l.lowest_bin) l.lowest_bin = at.bin;
+        if (at.bin < l.lowest_bin) {
+            l.lowest_bin = at.bin;
+            if (!flat_) note_head(at.level, l);
+        }
         if (at.level < lowest_) lowest_ = at.level;
         if (at.bin != size_bin) edge_entries_ += n;
         poor_entries_ += n;
     }
     std::vector<std::unique_ptr<Level>> levels_;  // by σ level, up to the deepest used
-    std::uint32_t pushes_ = 0;                    // QueuedTriangle::order
+    // A quadtree leaf's summary of each level for first_slot: the key of its
+    // lowest non-empty bin (Level::lowest_bin, kept exact) in the high word,
+    // the order of that bin's head in the low word, so that the least word
+    // is the slot to take first: edge bins by their absolute edge_bin(l²)
+    // (bin 0 of a level stands for bin_count - 1 below its top: slot), the
+    // older head first where two levels hold the same edge bin, size bins
+    // after every edge bin, lowest level first.  empty_head: nothing queued.
+    static constexpr std::uint64_t empty_head = ~std::uint64_t{0};
+    static constexpr std::int64_t key_offset = 4096;  // keys are above -4096
+    static constexpr std::int64_t size_key = std::int64_t{1} << 20;
+    static constexpr std::uint64_t size_heads = std::uint64_t(size_key + key_offset) << 32;
+    std::vector<std::uint64_t> heads_;
+    void note_head(int j, const Level& l) {
+        std::uint64_t& h = heads_[static_cast<std::size_t>(j)];
+        const int b = l.lowest_bin;
+        if (b > size_bin) {
+            h = empty_head;
+        } else if (b == size_bin) {
+            h = std::uint64_t(size_key + j + key_offset) << 32;
+        } else {
+            const std::int64_t key = top_bin_ - 4L * j - (bin_count - 1 - b);
+            h = (std::uint64_t(key + key_offset) << 32) | l.bins[b].items[l.bins[b].head].order;
+        }
+    }
+    std::uint32_t pushes_ = 0;  // QueuedTriangle::order
     int lowest_ = bucket_count;
     std::size_t poor_entries_ = 0;
     // Of them, in edge bins: while none, the window's first slot is the

@@ -109,6 +109,14 @@ inline constexpr unsigned default_granularity = 5;
 // further made area-bound runs 1.2-1.6 times slower for the same counts.)
 inline constexpr int order_levels_beyond_split = 4;
 
+// How many entries a leaf whose count keeps it from splitting takes, in
+// Triangle's order over all its levels, between two looks at its count
+// (Worker::refine_while_blocked).  A look costs the counting of what the
+// batch made; 4,096 entries are a few milliseconds of refinement, so a
+// leaf whose count falls to 0 goes on to its window (and its split) soon
+// after.
+inline constexpr std::uint64_t blocked_batch = 4096;
+
 // The largest angle bound (-q) the quadtree refines; above it every thread
 // count runs the sequential refiner, in Triangle's order.  Above 30 degrees
 // the order decides whether refinement ends at all, and the leaves' windows

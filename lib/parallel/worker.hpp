@@ -238,6 +238,7 @@ private:
     void route_subsegment(refine::QueuedSubsegment s, NodeId splitting);
     void deliver(const Routed& r, NodeId splitting);
     bool should_split(const Node& n, LeafState& state);
+    bool refine_while_blocked(const Node& n, LeafState& state);
     int granularity_at(const Node& n) const;
     void split(NodeId leaf);
 

@@ -285,13 +285,18 @@ bool LeafRefiner::refine_leaf(Leaf& leaf) {
     return refine_levels(leaf, lowest + static_cast<int>(settings_.granularity));
 }
 
-bool LeafRefiner::refine_levels(Leaf& leaf, int last_level, int last_size_level) {
+bool LeafRefiner::refine_levels(Leaf& leaf, int last_level, int last_size_level,
+                                std::uint64_t* takes_left) {
     split_queued_subsegments(leaf);
     if (report_.stopped != RefineReport::Stop::none) return false;
     const int last = std::min(last_level, Leaf::bucket_count - 1);
     // Always the first entry of the lowest slot: a split's new triangles
     // may land in a lower slot than the one being emptied.
     for (PoorSlot at; leaf.first_slot(last, at, last_size_level);) {
+        if (takes_left != nullptr) {
+            if (*takes_left == 0) break;
+            --*takes_left;
+        }
         QueuedTriangle q;
         leaf.pop_poor(at.level, q, &at);
         const mesh::Triangle& r = mesh_.triangle(q.id);

@@ -197,8 +197,10 @@ public:
     bool refine_leaf(Leaf& leaf);
     // The same for levels i_min .. last_level, size bins only up to
     // last_size_level (none when last_level < i_min, but step 0 always
-    // runs).
-    bool refine_levels(Leaf& leaf, int last_level, int last_size_level = Leaf::bucket_count);
+    // runs).  With takes_left, at most that many entries (stale ones
+    // included), counted off it.
+    bool refine_levels(Leaf& leaf, int last_level, int last_size_level = Leaf::bucket_count,
+                       std::uint64_t* takes_left = nullptr);
     // Splits queued subsegments until none is left (step 0); returns how
     // many it split.
     std::uint64_t split_queued_subsegments(Leaf& leaf);

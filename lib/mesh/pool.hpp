@@ -15,9 +15,11 @@
 // A pool on a LANE (the deterministic parallel refiner's) claims by a fixed
 // rule instead: lane k of n takes triangle chunks and vertex chunks
 // base + k, base + n + k, base + 2n + k, ... of the ids above those claimed
-// when the lanes were made.  The ids it hands out then depend only on the
-// sequence of creations and destructions asked of it, whatever other lanes
-// do at the same time and whichever thread runs it.
+// when the lane was set (move_to_lane: before every round, n being the
+// lanes the round uses).  The ids it hands out then depend only on the
+// lanes' settings and the sequence of creations and destructions asked of
+// it, whatever other lanes do at the same time and whichever thread runs
+// it.
 //
 // A pool must not outlive its mesh.  When destroyed it gives its unused slots
 // back to the mesh, and the next pool created starts from them.
@@ -87,6 +89,15 @@ public:
 
     // A new vertex at p.
     VertexId new_vertex(const Point& p, VertexKind kind);
+
+    // A lane pool's claims from now on follow `lane` (its own chunks from
+    // lane.triangle_chunk and lane.vertex_chunk on); the slots and ids it
+    // holds stay its own.
+    void move_to_lane(const Lane& lane) {
+        lane_ = lane;
+        lane_triangle_chunks_ = 0;
+        lane_vertex_chunks_ = 0;
+    }
 
 private:
     void refill();

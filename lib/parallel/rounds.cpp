@@ -10,6 +10,7 @@
 #include <mutex>
 #include <thread>
 
+#include "mesh/pool.hpp"
 #include "parallel/scheduler.hpp"
 #include "parallel/worker.hpp"
 
@@ -181,6 +182,18 @@ void run_rounds(std::vector<std::unique_ptr<Worker>>& lanes, Scheduler& schedule
         for (std::size_t i = 0; i < n; ++i)
             round.results[i].balance = scheduler.take_balance_candidates(static_cast<int>(i));
         round.lanes_used = static_cast<unsigned>(std::min<std::size_t>(n, lane_total));
+        // The round's lanes claim ids above every id claimed so far, lane l
+        // every lanes_used-th chunk from the l-th: a round of one leaf claims
+        // chunks one after another.  (With the 64 lanes set once, a run that
+        // made most of the mesh on one lane left 63 chunks unused for each
+        // one it filled: ids 64 times its triangles, which met the limit of
+        // 2^30 ids at about 16 million triangles.)
+        const mesh::Lane base = mesh::Lane::first(lanes[0]->pool().mesh(), round.lanes_used);
+        for (unsigned l = 0; l < round.lanes_used; ++l) {
+            mesh::Lane lane = base;
+            lane.index = l;
+            lanes[l]->pool().move_to_lane(lane);
+        }
         report.master.managing += seconds(t0, Clock::now());
 
         pool.run(round);

@@ -202,4 +202,36 @@ TEST_CASE("the recorded rounds measure the work they claim", "[parallel][determi
     }
 }
 
+TEST_CASE("a round's lanes claim ids side by side, so one long run keeps them dense",
+          "[parallel][determinism]") {
+    // A star of 60,000 segments under -q30 alone: its slivers keep the root
+    // from splitting, and the root's one run makes every triangle (194,030)
+    // on one lane, which claims two chunks of ids besides the slots the
+    // initial triangulation's dead triangles leave it.  With each of the 64
+    // lanes taking every 64th chunk for the whole refinement, that second
+    // chunk lay 64 chunks up (triangle_end 8,585,216): ids 64 times the
+    // triangles, which met the limit of 2^30 ids at about 16 million.
+    triangulate::Pslg p;
+    constexpr std::uint32_t n = 60000;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const double a = 2 * 3.141592653589793 * i / n;
+        const double r =
+            1 + 0.25 * std::sin(7 * a) + 0.1 * std::sin(113 * a) + 0.03 * std::sin(1031 * a);
+        p.points.push_back({r * std::cos(a), r * std::sin(a)});
+        p.segments.push_back(i);
+        p.segments.push_back((i + 1) % n);
+    }
+    mesh::Mesh m = cdt(p);
+    const std::uint64_t before = m.triangle_end();
+    ParallelOptions o;
+    o.threads = 2;
+    ParallelReport report;
+    refine::RefineSettings s = settings_for(30, 0);
+    s.checked = false;
+    refine_parallel(m, s, o, report);
+    REQUIRE(report.rounds.size() == 1);
+    REQUIRE(m.count_triangles() > mesh::Mesh::TriangleTable::chunk_size);
+    CHECK(m.triangle_end() <= before + 4 * std::uint64_t{mesh::Mesh::TriangleTable::chunk_size});
+}
+
 }  // namespace gpdr::parallel::testing

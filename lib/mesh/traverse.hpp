@@ -5,8 +5,10 @@
 // meshes with a canonical order instead (rotate each triangle to its smallest
 // vertex, sort).  Call these only while no thread is changing the mesh.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "mesh/mesh.hpp"
@@ -24,19 +26,29 @@ struct EdgeView {
     bool subsegment;  // flagged as a subsegment
 };
 
+// f(TriangleId, const Triangle&) for every live triangle whose id lies in
+// [first, end), in id order.  (Chunks nobody claimed are skipped whole:
+// mesh.hpp; the parallel refiner's lanes leave many.)
+template <class F>
+void for_each_triangle_in(const Mesh& mesh, std::uint32_t first, std::uint32_t end, F&& f) {
+    constexpr std::uint32_t chunk = Mesh::TriangleTable::chunk_size;
+    for (std::uint32_t from = first; from < end;) {
+        const std::uint32_t to =
+            static_cast<std::uint32_t>(std::min<std::uint64_t>(end, (from / chunk + 1ull) * chunk));
+        if (mesh.has_triangle_chunk(from / chunk)) {
+            for (std::uint32_t i = from; i < to; ++i) {
+                const Triangle& t = mesh.triangle(TriangleId{i});
+                if (t.live()) f(TriangleId{i}, t);
+            }
+        }
+        from = to;
+    }
+}
+
 // f(TriangleId, const Triangle&) for every live triangle, in id order.
-// (Chunks nobody claimed are skipped whole: mesh.hpp.)
 template <class F>
 void for_each_triangle(const Mesh& mesh, F&& f) {
-    constexpr std::uint32_t chunk = Mesh::TriangleTable::chunk_size;
-    const std::uint32_t end = mesh.triangle_end();
-    for (std::uint32_t first = 0; first < end; first += chunk) {
-        if (!mesh.has_triangle_chunk(first / chunk)) continue;
-        for (std::uint32_t i = first; i < first + chunk; ++i) {
-            const Triangle& t = mesh.triangle(TriangleId{i});
-            if (t.live()) f(TriangleId{i}, t);
-        }
-    }
+    for_each_triangle_in(mesh, 0, mesh.triangle_end(), std::forward<F>(f));
 }
 
 // f(const EdgeView&) for every edge of the mesh, each once.

@@ -573,39 +573,26 @@ void count_left_in(const mesh::Mesh& mesh, const RefineRun& run,
                    std::span<const LeafRefiner::GivenUp> given_up, std::uint32_t first,
                    std::uint32_t end, bool full, RefineReport& report) {
     const QualityTest& quality = run.quality();
-    constexpr std::uint32_t chunk_mask = mesh::Mesh::TriangleTable::chunk_mask;
-    for (std::uint32_t i = first; i < end; ++i) {
-        // Chunks nobody claimed are skipped whole: the parallel refiner's
-        // lanes leave holes of whole chunks (mesh.hpp), and reading them,
-        // zeros, cost more than the rest of the pass on meshes of 100,000
-        // triangles.
-        if ((i == first || (i & chunk_mask) == 0) &&
-            !mesh.has_triangle_chunk(i >> mesh::Mesh::triangle_chunk_bits)) {
-            i |= chunk_mask;  // the whole chunk (the loop's ++i goes past it)
-            continue;
-        }
-        const TriangleId id{i};
-        const mesh::Triangle& t = mesh.triangle(id);
-        if (!t.live()) continue;
+    mesh::for_each_triangle_in(mesh, first, end, [&](TriangleId id, const mesh::Triangle& t) {
         // Encroached subsegments, each seen from its triangle of lower id
         // (as mesh::for_each_edge does).
         for (int k = 0; k < 3; ++k) {
             if (!t.is_subsegment(k)) continue;
             const EdgeRef across = t.n[k];
-            if (!across.is_none() && mesh::index(across.triangle()) < i) continue;
+            if (!across.is_none() && mesh::index(across.triangle()) < mesh::index(id)) continue;
             if (subsegment_encroached(mesh, EdgeRef(id, k), quality.encroachment_lens()))
                 ++report.encroached_left;
         }
         if (!full) {
             report.left_small_input_angle += t.small_angle_protected() ? 1 : 0;
-            continue;
+            return;
         }
         const TriangleMeasures m =
             QualityTest::measure(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]));
         bool protected_angle = false;
         if (quality.assess(mesh, id, m, &protected_angle) == Poorness::good) {
             report.left_small_input_angle += protected_angle ? 1 : 0;
-            continue;
+            return;
         }
         const std::uint8_t reason = give_up_reason(given_up, id, t.generation);
         if (reason == reason_no_split || reason == reason_precision)
@@ -618,7 +605,7 @@ void count_left_in(const mesh::Mesh& mesh, const RefineRun& run,
             ++report.left_budget;
         else
             ++report.left_other;
-    }
+    });
 }
 
 // Outside full counting: the give-ups whose triangles are still alive (a

@@ -53,3 +53,38 @@ TEST_CASE("triangle numbering skips dead slots", "[mesh][traverse]") {
                       [&](TriangleId id, const Triangle&) { seen.push_back(number[index(id)]); });
     CHECK(seen == std::vector<std::uint32_t>{0, 1, 2});
 }
+
+TEST_CASE("a range of ids visits its live triangles, across chunks nobody claimed",
+          "[mesh][traverse]") {
+    // Lane pools leave whole chunks unclaimed between theirs (pool.hpp);
+    // count_left shares the ids out between threads by ranges that start
+    // and end anywhere.  Every range must see exactly the live triangles a
+    // look at each id in it finds (a missing chunk reads as dead slots).
+    Mesh mesh = mesh_from_triangles({{0, 0}, {1, 0}, {1, 1}}, {{0, 1, 2}});
+    const Lane lane = Lane::first(mesh, 3);
+    {
+        Pool pool(mesh, Lane{2, 3, lane.triangle_chunk, lane.vertex_chunk});
+        const std::uint32_t per_chunk = Mesh::TriangleTable::chunk_size;
+        for (std::uint32_t i = 0; i < 2 * per_chunk + 10; ++i) {
+            const TriangleId t = pool.create(VertexId{0}, VertexId{1}, VertexId{2});
+            if (i % 3 == 0) pool.destroy(t);
+        }
+    }
+    const std::uint32_t end = mesh.triangle_end();
+    const std::uint32_t chunk = Mesh::TriangleTable::chunk_size;
+    REQUIRE(end > 6 * chunk);  // lane 2 of 3: chunks 2 and 5 past the first, holes between
+    for (const auto& [first, last] :
+         std::vector<std::pair<std::uint32_t, std::uint32_t>>{{0, end},
+                                                              {1, chunk - 1},
+                                                              {chunk / 2, 4 * chunk + 7},
+                                                              {3 * chunk + 5, end},
+                                                              {5 * chunk, 5 * chunk}}) {
+        INFO("ids " << first << " to " << last);
+        std::vector<std::uint32_t> seen, expected;
+        for_each_triangle_in(mesh, first, last,
+                             [&](TriangleId id, const Triangle&) { seen.push_back(index(id)); });
+        for (std::uint32_t i = first; i < last; ++i)
+            if (mesh.triangle(TriangleId{i}).live()) expected.push_back(i);
+        CHECK(seen == expected);
+    }
+}

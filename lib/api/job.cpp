@@ -196,7 +196,7 @@ Meshed make_mesh(const Options& options, api::Input& input, const WarningSink& w
     materialise = materialise || neighbours || options.jettison;
     m.arrays = api::mesh_to_arrays(tri.mesh, std::move(input.nodes.data), result.input_vertices,
                                    tri.triangle_attribute_count, tri.region_attributes, neighbours,
-                                   materialise);
+                                   materialise, parallel::thread_count(options.threads));
     result.vertices = m.arrays.nodes.size() - tri.duplicates;
     result.triangles = m.arrays.triangle_count;
     result.hull_edges = m.arrays.hull_edge_count;

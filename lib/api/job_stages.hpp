@@ -93,10 +93,11 @@ void warn_after_refinement(const refine::RefineReport& report, const WarningSink
 // for; without `materialise` the triangles stay in the mesh, which must then outlive the arrays
 // (MeshArrays::stream), and so must region_attributes. The coordinates of all vertices come from
 // the mesh, which keeps the input ones exactly: the caller may free nodes.xy once the mesh is
-// built, as long as the other arrays of `nodes` keep their input_count entries.
+// built, as long as the other arrays of `nodes` keep their input_count entries.  The passes over
+// the vertices and the triangles run on `threads` threads; the arrays do not depend on it.
 MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t input_count,
                           std::uint32_t attribute_count, std::span<const double> region_attributes,
-                          bool with_neighbours, bool materialise);
+                          bool with_neighbours, bool materialise, unsigned threads = 1);
 
 // The marker of mesh edge {a, b} (Triangle's rules): a subsegment's own
 // marker if non-zero, else 1 on the boundary, else 0.

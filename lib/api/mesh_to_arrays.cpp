@@ -5,12 +5,14 @@
 // where refinement added the vertex) and markers set by Triangle's rules.
 
 #include <algorithm>
+#include <memory>
 #include <string>
 #include <tuple>
 
 #include <gpdr/errors.hpp>
 
 #include "api/job_stages.hpp"
+#include "mesh/slices.hpp"
 #include "mesh/traverse.hpp"
 
 namespace gpdr::api {
@@ -39,7 +41,9 @@ struct MeshEdge {
 // (mesh/pool.hpp), so ids reach far past the vertices and triangles, with
 // whole chunks nobody claimed between: an array over every id would cost
 // several times the mesh's count (and as many page faults).  So only the
-// chunks that hold ids have numbers (none until set).
+// chunks that hold ids have numbers.  They start unset: the passes that
+// fill them (on several threads, a chunk at a time) set every id of the
+// chunks they cover, `none` where an id has no number.
 template <unsigned Bits>
 class ChunkedNumbers {
 public:
@@ -56,7 +60,7 @@ public:
                 first_[c] = next;
                 next += std::size_t{1} << bits;
             }
-        numbers_.assign(next, none);
+        numbers_ = std::make_unique_for_overwrite<std::uint32_t[]>(next);
     }
     // Whether chunk c has numbers.
     bool has_chunk(std::uint32_t c) const { return c < first_.size() && first_[c] != absent; }
@@ -68,7 +72,7 @@ private:
     static constexpr std::size_t absent = ~std::size_t{0};
     std::size_t at(std::uint32_t id) const { return first_[id >> bits] + (id & mask); }
     std::vector<std::size_t> first_;  // per chunk: where its numbers start
-    std::vector<std::uint32_t> numbers_;
+    std::unique_ptr<std::uint32_t[]> numbers_;
 };
 
 // Mesh vertex id -> node number (the claimed chunks, and the input's).
@@ -91,34 +95,47 @@ TriangleNumbers triangle_numbers(const mesh::Mesh& mesh) {
 // Vertex numbers: the input vertices keep theirs (duplicates included, as
 // Triangle writes them); added vertices follow, in id order, skipping ids
 // claimed but never used.  Fills the coordinates in `nodes` and `mesh_ids`;
-// returns each mesh vertex's number (none for the skipped).
+// returns each mesh vertex's number (none for the skipped).  On `threads`
+// threads, a chunk of ids at a time: each chunk counts its vertices, then
+// numbers them from the count of the chunks before it, which gives the
+// numbers one pass in id order gives.
 VertexNumbers number_vertices(const mesh::Mesh& mesh, std::size_t input_count, NodeSet& nodes,
-                              std::vector<std::uint32_t>& mesh_ids) {
-    const std::uint32_t vertex_end = mesh.vertex_end();
-    nodes.xy.resize(2 * input_count);
-    for (std::uint32_t v = 0; v < input_count; ++v) {
-        const auto& p = mesh.point(mesh::VertexId{v});
-        nodes.xy[2 * std::size_t{v}] = p.x;
-        nodes.xy[2 * std::size_t{v} + 1] = p.y;
-    }
+                              std::vector<std::uint32_t>& mesh_ids, unsigned threads) {
+    constexpr unsigned bits = VertexNumbers::bits;
+    const auto end =
+        static_cast<std::uint32_t>(std::max<std::size_t>(mesh.vertex_end(), input_count));
     VertexNumbers number = vertex_numbers(mesh, input_count);
-    mesh_ids.reserve(input_count);
-    for (std::uint32_t v = 0; v < input_count; ++v) {
-        number[v] = v;
-        mesh_ids.push_back(v);
-    }
-    for (std::uint32_t v = static_cast<std::uint32_t>(input_count); v < vertex_end; ++v) {
-        if ((v & VertexNumbers::mask) == 0 && !number.has_chunk(v >> VertexNumbers::bits)) {
-            v |= VertexNumbers::mask;  // the whole chunk (the loop's ++v goes past it)
-            continue;
+    const auto written = [&](std::uint32_t v) {
+        return v < input_count || mesh.kind(mesh::VertexId{v}) != mesh::VertexKind::unused;
+    };
+    const std::vector<std::uint32_t> chunks =
+        mesh::held_chunks(end, bits, [&number](std::uint32_t c) { return number.has_chunk(c); });
+    std::vector<std::uint32_t> first(chunks.size() + 1, 0);  // the numbers before each chunk
+    mesh::run_pieces(threads, chunks.size(), [&](std::size_t i) {
+        const mesh::ChunkIds ids = mesh::chunk_ids(chunks[i], bits, end);
+        std::uint32_t n = 0;
+        for (std::uint32_t v = ids.first; v < ids.last; ++v) n += written(v) ? 1 : 0;
+        first[i + 1] = n;
+    });
+    for (std::size_t i = 0; i < chunks.size(); ++i) first[i + 1] += first[i];
+    nodes.xy.resize(2 * std::size_t{first.back()});
+    mesh_ids.resize(first.back());
+    mesh::run_pieces(threads, chunks.size(), [&](std::size_t i) {
+        const mesh::ChunkIds ids = mesh::chunk_ids(chunks[i], bits, end);
+        std::uint32_t n = first[i];
+        for (std::uint32_t v = ids.first; v < ids.last; ++v) {
+            if (!written(v)) {
+                number[v] = none;
+                continue;
+            }
+            number[v] = n;
+            mesh_ids[n] = v;
+            const auto& p = mesh.point(mesh::VertexId{v});
+            nodes.xy[2 * std::size_t{n}] = p.x;
+            nodes.xy[2 * std::size_t{n} + 1] = p.y;
+            ++n;
         }
-        if (mesh.kind(mesh::VertexId{v}) == mesh::VertexKind::unused) continue;
-        number[v] = static_cast<std::uint32_t>(mesh_ids.size());
-        mesh_ids.push_back(v);
-        const auto& p = mesh.point(mesh::VertexId{v});
-        nodes.xy.push_back(p.x);
-        nodes.xy.push_back(p.y);
-    }
+    });
     return number;
 }
 
@@ -140,34 +157,86 @@ void copy_added_attributes(const mesh::Mesh& mesh, std::size_t input_count,
     }
 }
 
+// A place to start reading triangles from: triangle number `first` (in
+// the output's order) lies at slot `slot`.
+struct Anchor {
+    std::uint32_t first = 0;
+    std::uint32_t slot = 0;
+};
+
+// What the walk over the triangles finds (below).
+struct TriangleWalk {
+    std::uint32_t count = 0;      // live triangles
+    std::vector<Anchor> anchors;  // by `first`, none more than `stride` apart
+    std::vector<MeshEdge> hull, subsegments;
+};
+
 // The one walk over the triangles that the output needs: it counts the
-// live triangles, keeps every `stride`-th live triangle's slot in `slot_of`
-// (for the stream below) and, with neighbours, each slot's number (compact,
-// in id order) in `triangle_number`, and lists the edges that the markers
-// and the segments come from: the hull's in `hull` and the subsegments in
-// `subsegments`, each once, in the order of mesh::for_each_edge.
+// live triangles, keeps anchors (for the stream below: the first triangle
+// of every chunk of slots, and every `stride`-th after it) and, with
+// neighbours, each slot's number (compact, in id order) in
+// `triangle_number`, and lists the edges that the markers and the segments
+// come from: the hull's and the subsegments, each once, in the order of
+// mesh::for_each_edge.  On `threads` threads, a chunk of slots at a time,
+// joined in slot order; with neighbours a second pass adds to each chunk's
+// numbers the triangles before it.
 constexpr std::uint32_t stride = 4096;
-std::uint32_t walk_triangles(const mesh::Mesh& mesh, bool with_neighbours,
-                             TriangleNumbers& triangle_number, std::vector<std::uint32_t>& slot_of,
-                             std::vector<MeshEdge>& hull, std::vector<MeshEdge>& subsegments) {
-    std::uint32_t count = 0;
+TriangleWalk walk_triangles(const mesh::Mesh& mesh, bool with_neighbours,
+                            TriangleNumbers& triangle_number, unsigned threads) {
+    constexpr unsigned bits = TriangleNumbers::bits;
     if (with_neighbours) triangle_number = triangle_numbers(mesh);
-    mesh::for_each_triangle(mesh, [&](mesh::TriangleId id, const mesh::Triangle& t) {
-        if (count % stride == 0) slot_of.push_back(index(id));
-        if (with_neighbours) triangle_number[index(id)] = count;
-        ++count;
-        for (int k = 0; k < 3; ++k) {
-            const mesh::EdgeRef across = t.n[k];
-            const bool on_hull = across.is_none();
-            // The edge is listed from its triangle with the lower id.
-            if (!on_hull && index(across.triangle()) < index(id)) continue;
-            if (!on_hull && !t.is_subsegment(k)) continue;
-            const MeshEdge e{index(t.v[mesh::next3(k)]), index(t.v[mesh::prev3(k)]), on_hull};
-            if (on_hull) hull.push_back(e);
-            if (t.is_subsegment(k)) subsegments.push_back(e);
-        }
+    const std::vector<std::uint32_t> chunks = mesh::triangle_chunks(mesh);
+    const std::uint32_t end = mesh.triangle_end();
+    std::vector<TriangleWalk> parts(chunks.size());
+    mesh::run_pieces(threads, chunks.size(), [&](std::size_t i) {
+        const mesh::ChunkIds ids = mesh::chunk_ids(chunks[i], bits, end);
+        TriangleWalk& part = parts[i];
+        if (with_neighbours)
+            for (std::uint32_t id = ids.first; id < ids.last; ++id) triangle_number[id] = none;
+        std::uint32_t count = 0;
+        mesh::for_each_triangle_in(mesh, ids.first, ids.last,
+                                   [&](mesh::TriangleId id, const mesh::Triangle& t) {
+                                       if (count % stride == 0)
+                                           part.anchors.push_back({count, index(id)});
+                                       if (with_neighbours) triangle_number[index(id)] = count;
+                                       ++count;
+                                       for (int k = 0; k < 3; ++k) {
+                                           const mesh::EdgeRef across = t.n[k];
+                                           const bool on_hull = across.is_none();
+                                           // The edge is listed from its triangle with the lower
+                                           // id.
+                                           if (!on_hull && index(across.triangle()) < index(id))
+                                               continue;
+                                           if (!on_hull && !t.is_subsegment(k)) continue;
+                                           const MeshEdge e{index(t.v[mesh::next3(k)]),
+                                                            index(t.v[mesh::prev3(k)]), on_hull};
+                                           if (on_hull) part.hull.push_back(e);
+                                           if (t.is_subsegment(k)) part.subsegments.push_back(e);
+                                       }
+                                   });
+        part.count = count;
     });
-    return count;
+    TriangleWalk all;
+    std::vector<std::uint32_t> before(chunks.size(), 0);  // triangles before each chunk
+    for (std::size_t i = 0; i < chunks.size(); ++i) {
+        before[i] = all.count;
+        for (const Anchor& a : parts[i].anchors)
+            all.anchors.push_back({a.first + all.count, a.slot});
+        all.hull.insert(all.hull.end(), parts[i].hull.begin(), parts[i].hull.end());
+        all.subsegments.insert(all.subsegments.end(), parts[i].subsegments.begin(),
+                               parts[i].subsegments.end());
+        all.count += parts[i].count;
+    }
+    if (with_neighbours)
+        mesh::run_pieces(threads, chunks.size(), [&](std::size_t i) {
+            if (before[i] == 0) return;
+            const mesh::ChunkIds ids = mesh::chunk_ids(chunks[i], bits, end);
+            mesh::for_each_triangle_in(mesh, ids.first, ids.last,
+                                       [&](mesh::TriangleId id, const mesh::Triangle&) {
+                                           triangle_number[index(id)] += before[i];
+                                       });
+        });
+    return all;
 }
 
 // A triangle's attributes are its region's (0 past the table).
@@ -187,20 +256,20 @@ std::uint32_t live_from(const mesh::Mesh& mesh, std::uint32_t slot) {
 }
 
 // The triangles as a stream that walks the mesh's slots on each pass;
-// `number` and `slot_of` (slot_of[k]: the slot of triangle k * stride, so
-// that a run of triangles can be read from anywhere without walking the
-// slots before it) are shared by the passes (the -V statistics and each
-// file).  Its read() starts at the slot of the triangle `stride` * k before
-// the first one asked for, so threads can read runs of triangles at once.
+// `number` and `anchors` (so that a run of triangles can be read from
+// anywhere without walking the slots before it) are shared by the passes
+// (the -V statistics and each file).  Its read() starts at the last anchor
+// before the first triangle asked for, so threads can read runs of
+// triangles at once.
 std::function<io::EleSource()> triangle_stream(const mesh::Mesh& mesh, VertexNumbers number,
-                                               std::vector<std::uint32_t> slot_of,
-                                               std::uint32_t count, std::uint32_t attribute_count,
+                                               std::vector<Anchor> anchors, std::uint32_t count,
+                                               std::uint32_t attribute_count,
                                                std::span<const double> region_attributes) {
     struct Shared {
         VertexNumbers number;
-        std::vector<std::uint32_t> slot_of;
+        std::vector<Anchor> anchors;
     };
-    auto shared = std::make_shared<Shared>(Shared{std::move(number), std::move(slot_of)});
+    auto shared = std::make_shared<Shared>(Shared{std::move(number), std::move(anchors)});
     // Fills triangle `t`'s corners and attributes.
     const auto put = [shared, attribute_count, region_attributes](
                          const mesh::Triangle& t, std::uint32_t* corners, double* attributes) {
@@ -220,8 +289,13 @@ std::function<io::EleSource()> triangle_stream(const mesh::Mesh& mesh, VertexNum
             [&mesh, shared, put, attribute_count](std::size_t first, std::size_t n,
                                                   std::uint32_t* corners, double* attributes) {
                 if (n == 0) return;
-                std::uint32_t slot = shared->slot_of[first / stride];
-                for (std::size_t skip = first % stride;; ++slot) {
+                const auto& anchors = shared->anchors;
+                const Anchor& from =
+                    *(std::upper_bound(anchors.begin(), anchors.end(), first,
+                                       [](std::size_t f, const Anchor& a) { return f < a.first; }) -
+                      1);
+                std::uint32_t slot = from.slot;
+                for (std::size_t skip = first - from.first;; ++slot) {
                     slot = live_from(mesh, slot);
                     if (skip-- == 0) break;
                 }
@@ -310,16 +384,16 @@ void set_vertex_markers(const mesh::Mesh& mesh, const VertexNumbers& number,
 
 MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t input_count,
                           std::uint32_t attribute_count, std::span<const double> region_attributes,
-                          bool with_neighbours, bool materialise) {
+                          bool with_neighbours, bool materialise, unsigned threads) {
     MeshArrays out;
-    VertexNumbers number = number_vertices(mesh, input_count, nodes, out.mesh_ids);
+    VertexNumbers number = number_vertices(mesh, input_count, nodes, out.mesh_ids, threads);
     copy_added_attributes(mesh, input_count, out.mesh_ids, nodes);
 
     TriangleNumbers triangle_number;
-    std::vector<std::uint32_t> slot_of;
-    std::vector<MeshEdge> hull, subsegments;
-    const std::uint32_t count =
-        walk_triangles(mesh, with_neighbours, triangle_number, slot_of, hull, subsegments);
+    TriangleWalk walk = walk_triangles(mesh, with_neighbours, triangle_number, threads);
+    const std::uint32_t count = walk.count;
+    const std::vector<MeshEdge>& hull = walk.hull;
+    const std::vector<MeshEdge>& subsegments = walk.subsegments;
     out.hull_edge_count = hull.size();
     if (with_neighbours) out.neighbours.neighbours.reserve(3 * std::size_t{count});
     out.triangle_count = count;
@@ -337,7 +411,7 @@ MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t inp
     if (materialise)
         copy_triangles(mesh, number, triangle_number, with_neighbours, region_attributes, out);
     else
-        out.stream = triangle_stream(mesh, std::move(number), std::move(slot_of), count,
+        out.stream = triangle_stream(mesh, std::move(number), std::move(walk.anchors), count,
                                      attribute_count, region_attributes);
     out.nodes = std::move(nodes);
     return out;

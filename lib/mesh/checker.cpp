@@ -4,12 +4,11 @@
 #include "mesh/problem_list.hpp"
 
 #include <algorithm>
-#include <exception>
-#include <thread>
 
 #include <fmt/format.h>
 
 #include "geometry/predicates.hpp"
+#include "mesh/slices.hpp"
 
 namespace gpdr::mesh {
 
@@ -131,35 +130,19 @@ void check_slots(const Mesh& mesh, const CheckOptions& options, std::uint32_t fi
 }  // namespace
 
 std::vector<std::string> check_mesh(const Mesh& mesh, const CheckOptions& options) {
-    // Slices of the slots on several threads, their problems in slot order.
+    // The claimed chunks of slots on several threads, their problems in
+    // slot order.
+    const std::vector<std::uint32_t> chunks = triangle_chunks(mesh);
     const std::uint32_t end = mesh.triangle_end();
-    const unsigned threads = std::clamp(options.threads, 1u, std::max(1u, end >> 16));
-    std::vector<Report> reports(threads, Report(options.max_problems));
-    std::vector<std::size_t> flagged(threads, 0);
-    std::vector<std::exception_ptr> failures(threads);
-    {
-        std::vector<std::jthread> pool;
-        for (unsigned i = 0; i < threads; ++i) {
-            const auto first = static_cast<std::uint32_t>(std::uint64_t{end} * i / threads);
-            const auto last = static_cast<std::uint32_t>(std::uint64_t{end} * (i + 1) / threads);
-            auto slice = [&, i, first, last] {
-                try {
-                    check_slots(mesh, options, first, last, reports[i], flagged[i]);
-                } catch (...) {
-                    failures[i] = std::current_exception();
-                }
-            };
-            if (i + 1 == threads)
-                slice();
-            else
-                pool.emplace_back(slice);
-        }
-    }
-    for (const auto& f : failures)
-        if (f) std::rethrow_exception(f);
+    std::vector<Report> reports(chunks.size(), Report(options.max_problems));
+    std::vector<std::size_t> flagged(chunks.size(), 0);
+    run_pieces(options.threads, chunks.size(), [&](std::size_t i) {
+        const ChunkIds ids = chunk_ids(chunks[i], Mesh::triangle_chunk_bits, end);
+        check_slots(mesh, options, ids.first, ids.last, reports[i], flagged[i]);
+    });
     Report report(options.max_problems);
     std::size_t flagged_edges = 0;
-    for (unsigned i = 0; i < threads; ++i) {
+    for (std::size_t i = 0; i < chunks.size(); ++i) {
         report.take(reports[i]);
         flagged_edges += flagged[i];
     }

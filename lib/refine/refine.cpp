@@ -5,16 +5,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <limits>
 #include <optional>
 #include <string>
-#include <thread>
 
 #include <gpdr/errors.hpp>
 
 #include "geometry/predicates.hpp"
 #include "mesh/locate.hpp"
+#include "mesh/slices.hpp"
 #include "mesh/split_subsegment.hpp"
 #include "mesh/traverse.hpp"
 #include "refine/area_demand.hpp"
@@ -638,30 +637,15 @@ void count_left(const mesh::Mesh& mesh, const RefineRun& run,
     });
     // Full counting in checked mode, and when a limit stopped the run.
     const bool full = run.settings().checked || report.stopped != RefineReport::Stop::none;
-    threads = std::max(1u, threads);
-    const std::uint64_t end = mesh.triangle_end();
-    std::vector<RefineReport> parts(threads);
-    std::vector<std::exception_ptr> failures(threads);
-    std::vector<std::thread> pool;
-    for (unsigned i = 0; i < threads; ++i) {
-        parts[i].stopped = report.stopped;
-        const auto first = static_cast<std::uint32_t>(end * i / threads);
-        const auto last = static_cast<std::uint32_t>(end * (i + 1) / threads);
-        auto count = [&, i, first, last] {
-            try {
-                count_left_in(mesh, run, given_up, first, last, full, parts[i]);
-            } catch (...) {
-                failures[i] = std::current_exception();
-            }
-        };
-        if (threads == 1)
-            count();
-        else
-            pool.emplace_back(count);
-    }
-    for (auto& t : pool) t.join();
-    for (const auto& f : failures)
-        if (f) std::rethrow_exception(f);
+    // A part of the count per triangle chunk, joined in chunk order.
+    const std::vector<std::uint32_t> chunks = mesh::triangle_chunks(mesh);
+    const std::uint32_t end = mesh.triangle_end();
+    std::vector<RefineReport> parts(chunks.size());
+    for (RefineReport& p : parts) p.stopped = report.stopped;
+    mesh::run_pieces(threads, chunks.size(), [&](std::size_t i) {
+        const auto ids = mesh::chunk_ids(chunks[i], mesh::Mesh::triangle_chunk_bits, end);
+        count_left_in(mesh, run, given_up, ids.first, ids.last, full, parts[i]);
+    });
     for (const RefineReport& p : parts) {
         report.left_small_input_angle += p.left_small_input_angle;
         report.left_no_split += p.left_no_split;

@@ -10,7 +10,14 @@
 #include <thread>
 #include <vector>
 
+#include <gpdr/io.hpp>
+
+#include "api/api_test_support.hpp"
 #include "api/job_stages.hpp"
+#include "cli/cli_support.hpp"
+#include "mesh/traverse.hpp"
+#include "parallel/refine_parallel.hpp"
+#include "triangulate/constrained.hpp"
 #include "triangulate/delaunay.hpp"
 
 using namespace gpdr;
@@ -89,4 +96,88 @@ TEST_CASE("a streamed mesh's triangles are read in runs as in order", "[stream]"
             });
     }
     CHECK(together == expected.corners);
+}
+
+TEST_CASE("the arrays number the mesh as one pass in id order would", "[stream]") {
+    // The pipe refined on two threads: the lanes leave unused vertex ids,
+    // chunks nobody claimed and chunks nearly empty, over many chunks.
+    const auto read =
+        io::read_poly((test::source_dir() / "poly-samples" / "pipe.poly").string(), ignore_warning);
+    const triangulate::Pslg pslg = triangulate::pslg_from(read.data);
+    std::vector<mesh::VertexId> ends;
+    for (const std::uint32_t v : pslg.segments) ends.push_back(mesh::VertexId{v});
+    triangulate::CdtReport cdt;
+    mesh::Mesh mesh = triangulate::constrained_delaunay(pslg, {}, cdt);
+    refine::RefineSettings settings;
+    settings.criteria.min_angle_degrees = 25;
+    settings.criteria.max_area = 1.5;
+    settings.segment_ends = ends;
+    parallel::ParallelReport report;
+    parallel::refine_parallel(mesh, settings, 2, 0, report);
+    REQUIRE(mesh.triangle_chunks_claimed() >= 6);
+
+    // The reference: vertices and triangles in id order, one pass each.
+    const std::size_t input = pslg.points.size();
+    std::vector<std::uint32_t> ids;
+    std::vector<std::uint32_t> number_of(mesh.vertex_end(), NeighbourSet::none);
+    for (std::uint32_t v = 0; v < mesh.vertex_end(); ++v) {
+        if (v >= input && (!mesh.has_vertex_chunk(v >> mesh::Mesh::vertex_chunk_bits) ||
+                           mesh.kind(mesh::VertexId{v}) == mesh::VertexKind::unused))
+            continue;
+        number_of[v] = static_cast<std::uint32_t>(ids.size());
+        ids.push_back(v);
+    }
+    REQUIRE(ids.size() < mesh.vertex_end());  // ids to skip
+    std::vector<std::uint32_t> triangle_of(mesh.triangle_end(), NeighbourSet::none);
+    std::vector<std::uint32_t> corners;
+    std::uint32_t triangles = 0;
+    mesh::for_each_triangle(mesh, [&](mesh::TriangleId id, const mesh::Triangle& t) {
+        triangle_of[index(id)] = triangles++;
+        for (const mesh::VertexId v : t.v) corners.push_back(number_of[index(v)]);
+    });
+    std::vector<std::uint32_t> neighbours, segments;
+    mesh::for_each_triangle(mesh, [&](mesh::TriangleId, const mesh::Triangle& t) {
+        for (const mesh::EdgeRef n : t.n)
+            neighbours.push_back(n.is_none() ? NeighbourSet::none
+                                             : triangle_of[index(n.triangle())]);
+    });
+    std::size_t hull = 0;
+    mesh::for_each_edge(mesh, [&](const mesh::EdgeView& e) {
+        hull += e.hull ? 1 : 0;
+        if (!e.subsegment) return;
+        segments.push_back(number_of[index(e.from)]);
+        segments.push_back(number_of[index(e.to)]);
+    });
+
+    NodeSet nodes;
+    nodes.xy.assign(2 * input, 0.0);
+    const std::vector<double> regions{0.0};
+    for (const unsigned threads : {1u, 3u}) {
+        for (const bool materialise : {false, true}) {
+            INFO(threads << " threads, materialise " << materialise);
+            const api::MeshArrays arrays = api::mesh_to_arrays(mesh, nodes, input, 0, regions,
+                                                               materialise, materialise, threads);
+            CHECK(arrays.mesh_ids == ids);
+            bool points_match = arrays.nodes.xy.size() == 2 * ids.size();
+            for (std::size_t i = 0; points_match && i < ids.size(); ++i)
+                points_match = arrays.nodes.xy[2 * i] == mesh.point(mesh::VertexId{ids[i]}).x &&
+                               arrays.nodes.xy[2 * i + 1] == mesh.point(mesh::VertexId{ids[i]}).y;
+            CHECK(points_match);
+            CHECK(arrays.segments.endpoints == segments);
+            CHECK(arrays.hull_edge_count == hull);
+            if (materialise) CHECK(arrays.neighbours.neighbours == neighbours);
+            const io::EleSource source = api::triangle_source(arrays);
+            REQUIRE(source.count == triangles);
+            CHECK(in_order(source).corners == corners);
+            if (!source.read) continue;
+            // Runs from anywhere, across the chunks' joins.
+            for (std::size_t first = 0; first < triangles; first += 7919) {
+                const std::size_t length = std::min<std::size_t>(20000, triangles - first);
+                std::vector<std::uint32_t> run(3 * length);
+                std::vector<double> attributes(length);
+                source.read(first, length, run.data(), attributes.data());
+                CHECK(std::equal(run.begin(), run.end(), corners.begin() + 3 * first));
+            }
+        }
+    }
 }

@@ -111,8 +111,15 @@ VertexNumbers number_vertices(const mesh::Mesh& mesh, std::size_t input_count, N
     const std::vector<std::uint32_t> chunks =
         mesh::held_chunks(end, bits, [&number](std::uint32_t c) { return number.has_chunk(c); });
     std::vector<std::uint32_t> first(chunks.size() + 1, 0);  // the numbers before each chunk
+    // Each chunk's ids up to its used part (mesh.hpp); the numbers of the
+    // ids past it are never read.
+    const auto ids_of = [&](std::size_t i) {
+        mesh::ChunkIds ids = mesh::chunk_ids(chunks[i], bits, end);
+        ids.last = std::min(ids.last, ids.first + mesh.vertex_chunk_used(chunks[i]));
+        return ids;
+    };
     mesh::run_pieces(threads, chunks.size(), [&](std::size_t i) {
-        const mesh::ChunkIds ids = mesh::chunk_ids(chunks[i], bits, end);
+        const mesh::ChunkIds ids = ids_of(i);
         std::uint32_t n = 0;
         for (std::uint32_t v = ids.first; v < ids.last; ++v) n += written(v) ? 1 : 0;
         first[i + 1] = n;
@@ -121,7 +128,7 @@ VertexNumbers number_vertices(const mesh::Mesh& mesh, std::size_t input_count, N
     nodes.xy.resize(2 * std::size_t{first.back()});
     mesh_ids.resize(first.back());
     mesh::run_pieces(threads, chunks.size(), [&](std::size_t i) {
-        const mesh::ChunkIds ids = mesh::chunk_ids(chunks[i], bits, end);
+        const mesh::ChunkIds ids = ids_of(i);
         std::uint32_t n = first[i];
         for (std::uint32_t v = ids.first; v < ids.last; ++v) {
             if (!written(v)) {
@@ -191,8 +198,11 @@ TriangleWalk walk_triangles(const mesh::Mesh& mesh, bool with_neighbours,
     mesh::run_pieces(threads, chunks.size(), [&](std::size_t i) {
         const mesh::ChunkIds ids = mesh::chunk_ids(chunks[i], bits, end);
         TriangleWalk& part = parts[i];
-        if (with_neighbours)
-            for (std::uint32_t id = ids.first; id < ids.last; ++id) triangle_number[id] = none;
+        if (with_neighbours) {
+            const std::uint32_t used =
+                std::min(ids.last, ids.first + mesh.triangle_chunk_used(chunks[i]));
+            for (std::uint32_t id = ids.first; id < used; ++id) triangle_number[id] = none;
+        }
         std::uint32_t count = 0;
         mesh::for_each_triangle_in(mesh, ids.first, ids.last,
                                    [&](mesh::TriangleId id, const mesh::Triangle& t) {
@@ -245,13 +255,20 @@ double region_attribute(std::span<const double> region_attributes, std::size_t a
 }
 
 // The first live triangle slot at or after `slot` (there must be one),
-// passing over whole chunks nobody claimed (mesh.hpp).
+// passing over whole chunks nobody claimed and the unused ends of chunks
+// (mesh.hpp).
 std::uint32_t live_from(const mesh::Mesh& mesh, std::uint32_t slot) {
     constexpr std::uint32_t bits = mesh::Mesh::triangle_chunk_bits;
     constexpr std::uint32_t mask = mesh::Mesh::TriangleTable::chunk_mask;
-    for (;; ++slot) {
-        while ((slot & mask) == 0 && !mesh.has_triangle_chunk(slot >> bits)) slot += mask + 1;
+    for (;;) {
+        if ((slot & mask) == 0 && !mesh.has_triangle_chunk(slot >> bits)) {
+            slot += mask + 1;
+            continue;
+        }
         if (mesh.triangle(mesh::TriangleId{slot}).live()) return slot;
+        ++slot;
+        if ((slot & mask) != 0 && (slot & mask) >= mesh.triangle_chunk_used(slot >> bits))
+            slot = (slot | mask) + 1;
     }
 }
 

@@ -113,14 +113,20 @@ void check_edge(const Mesh& mesh, const CheckOptions& options, TriangleId id, co
     }
 }
 
-// The checks of triangle slots [first, last): problems into `report`, and
-// the flagged edges seen (each once, from its lower triangle) counted.
+// The checks of triangle slots [first, last), the slots of one chunk:
+// problems into `report`, and the flagged edges seen (each once, from its
+// lower triangle) counted.  A live triangle past the chunk's used part
+// (Mesh::triangle_chunk_used) is one that every pass over the mesh misses.
 void check_slots(const Mesh& mesh, const CheckOptions& options, std::uint32_t first,
                  std::uint32_t last, Report& report, std::size_t& flagged_edges) {
+    const std::uint32_t used = first + mesh.triangle_chunk_used(first >> Mesh::triangle_chunk_bits);
     for (std::uint32_t i = first; i < last; ++i) {
         const TriangleId id{i};
         const Triangle& t = mesh.triangle(id);
         if (!t.live()) continue;
+        if (i >= used)
+            report.add("{}: live past the {} slots of its chunk that were handed out",
+                       describe(id, t, options.base), used - first);
         const bool corners_ok = check_corners(mesh, id, t, options.base, report);
         for (int k = 0; k < 3; ++k)
             check_edge(mesh, options, id, t, k, corners_ok, report, flagged_edges);

@@ -22,7 +22,9 @@ Mesh::Mesh(Mesh&& other) noexcept
       vertex_end_(other.vertex_end_.load()),
       subsegments_(std::move(other.subsegments_)),
       spare_mutex_(std::move(other.spare_mutex_)),
-      spares_(std::move(other.spares_)) {
+      spares_(std::move(other.spares_)),
+      triangle_tails_(std::move(other.triangle_tails_)),
+      vertex_tails_(std::move(other.vertex_tails_)) {
     other.triangle_chunks_ = 0;
     other.vertex_end_ = 0;
 }
@@ -38,6 +40,8 @@ Mesh& Mesh::operator=(Mesh&& other) noexcept {
         subsegments_ = std::move(other.subsegments_);
         spare_mutex_ = std::move(other.spare_mutex_);
         spares_ = std::move(other.spares_);
+        triangle_tails_ = std::move(other.triangle_tails_);
+        vertex_tails_ = std::move(other.vertex_tails_);
         other.triangle_chunks_ = 0;
         other.vertex_end_ = 0;
     }
@@ -79,8 +83,9 @@ std::size_t Mesh::count_triangles() const {
     std::size_t live = 0;
     const std::uint32_t end = triangle_end();
     for (std::uint32_t t = 0; t < end; t += TriangleTable::chunk_size) {
-        if (!triangles_.has_chunk(t >> triangle_chunk_bits)) continue;  // (never claimed)
-        for (std::uint32_t i = t; i < t + TriangleTable::chunk_size; ++i)
+        const std::uint32_t c = t >> triangle_chunk_bits;
+        if (!triangles_.has_chunk(c)) continue;  // (never claimed)
+        for (std::uint32_t i = t; i < t + triangle_chunk_used(c); ++i)
             live += triangles_[i].live() ? 1 : 0;
     }
     return live;
@@ -131,10 +136,28 @@ VertexId Mesh::claim_vertex_chunk_at(std::uint32_t c) {
     return VertexId{c << vertex_chunk_bits};
 }
 
+namespace {
+
+// Records that the last `tail` ids of chunk c were never used (0: none
+// known), growing the table as needed.
+void set_tail(std::vector<std::uint32_t>& tails, std::uint32_t c, std::uint32_t tail) {
+    if (c >= tails.size()) {
+        if (tail == 0) return;
+        tails.resize(std::size_t{c} + 1, 0);
+    }
+    tails[c] = tail;
+}
+
+}  // namespace
+
 void Mesh::give_back(const SpareSlots& spare) {
     if (spare.free_head == index(no_triangle) && spare.fresh == spare.fresh_end) return;
     std::lock_guard lock(*spare_mutex_);
     spares_.push_back(spare);
+    // A fresh range runs to the end of its chunk (claim_triangle_chunk).
+    if (spare.fresh < spare.fresh_end && (spare.fresh_end & TriangleTable::chunk_mask) == 0)
+        set_tail(triangle_tails_, spare.fresh >> triangle_chunk_bits,
+                 spare.fresh_end - spare.fresh);
 }
 
 bool Mesh::take_back(SpareSlots& spare) {
@@ -142,7 +165,23 @@ bool Mesh::take_back(SpareSlots& spare) {
     if (spares_.empty()) return false;
     spare = spares_.back();
     spares_.pop_back();
+    // Its fresh slots may be used again.
+    if (spare.fresh < spare.fresh_end)
+        set_tail(triangle_tails_, spare.fresh >> triangle_chunk_bits, 0);
     return true;
+}
+
+void Mesh::give_back_vertices(std::uint32_t next, std::uint32_t end) {
+    if (next >= end) return;
+    std::uint32_t expected = end;
+    if (vertex_end_.compare_exchange_strong(expected, next, std::memory_order_acq_rel)) return;
+    // Ids below vertex_end_ are never claimed again: a tail that ends its
+    // chunk stays unused.
+    const std::uint32_t c = next >> vertex_chunk_bits;
+    if ((end & PointTable::chunk_mask) == 0 && ((end - 1) >> vertex_chunk_bits) == c) {
+        std::lock_guard lock(*spare_mutex_);
+        set_tail(vertex_tails_, c, end - next);
+    }
 }
 
 }  // namespace gpdr::mesh

@@ -134,6 +134,18 @@ public:
     // the others).
     bool has_triangle_chunk(std::uint32_t c) const { return triangles_.has_chunk(c); }
     bool has_vertex_chunk(std::uint32_t c) const { return kinds_.has_chunk(c); }
+    // How many ids of chunk c, from its first, were ever handed out, as far
+    // as the mesh knows: the whole chunk, unless the pool that held its end
+    // gave that end back unused and nobody took it again (each lane's last
+    // chunks).  Passes over the ids stop there: on many lanes, those unused
+    // ends are millions of slots.  Read them only while no pool is being
+    // destroyed.
+    std::uint32_t triangle_chunk_used(std::uint32_t c) const {
+        return TriangleTable::chunk_size - (c < triangle_tails_.size() ? triangle_tails_[c] : 0);
+    }
+    std::uint32_t vertex_chunk_used(std::uint32_t c) const {
+        return PointTable::chunk_size - (c < vertex_tails_.size() ? vertex_tails_[c] : 0);
+    }
 
     // ---- for Pool only -----------------------------------------------------
     // Triangle slots a pool owns and has not used: an intrusive free list
@@ -151,9 +163,9 @@ public:
     bool take_back(SpareSlots& spare);
     // A finished pool returns the unused tail [next, end) of its vertex
     // block; it is taken back only if it is still the last block claimed.
-    void give_back_vertices(std::uint32_t next, std::uint32_t end) {
-        if (next < end) vertex_end_.compare_exchange_strong(end, next, std::memory_order_acq_rel);
-    }
+    // Otherwise, when the tail ends its chunk, the chunk's used part
+    // (vertex_chunk_used) ends at `next`.
+    void give_back_vertices(std::uint32_t next, std::uint32_t end);
 
 private:
     TriangleTable triangles_;
@@ -165,6 +177,10 @@ private:
     SubsegmentTable subsegments_;
     std::unique_ptr<std::mutex> spare_mutex_;
     std::vector<SpareSlots> spares_;
+    // Per chunk, the ids at its end that no pool used (0 where unknown),
+    // written under spare_mutex_: triangle_chunk_used, vertex_chunk_used.
+    std::vector<std::uint32_t> triangle_tails_;
+    std::vector<std::uint32_t> vertex_tails_;
 };
 
 }  // namespace gpdr::mesh

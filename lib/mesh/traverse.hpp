@@ -27,8 +27,9 @@ struct EdgeView {
 };
 
 // f(TriangleId, const Triangle&) for every live triangle whose id lies in
-// [first, end), in id order.  (Chunks nobody claimed are skipped whole:
-// mesh.hpp; the parallel refiner's lanes leave many.)
+// [first, end), in id order.  (Chunks nobody claimed are skipped whole, and
+// the unused ends of chunks: mesh.hpp; the parallel refiner's lanes leave
+// many.)
 template <class F>
 void for_each_triangle_in(const Mesh& mesh, std::uint32_t first, std::uint32_t end, F&& f) {
     constexpr std::uint32_t chunk = Mesh::TriangleTable::chunk_size;
@@ -36,7 +37,10 @@ void for_each_triangle_in(const Mesh& mesh, std::uint32_t first, std::uint32_t e
         const std::uint32_t to =
             static_cast<std::uint32_t>(std::min<std::uint64_t>(end, (from / chunk + 1ull) * chunk));
         if (mesh.has_triangle_chunk(from / chunk)) {
-            for (std::uint32_t i = from; i < to; ++i) {
+            // (Slots past the chunk's used part were never live.)
+            const std::uint32_t used = std::min<std::uint32_t>(
+                to, (from / chunk) * chunk + mesh.triangle_chunk_used(from / chunk));
+            for (std::uint32_t i = from; i < used; ++i) {
                 const Triangle& t = mesh.triangle(TriangleId{i});
                 if (t.live()) f(TriangleId{i}, t);
             }

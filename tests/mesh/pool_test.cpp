@@ -11,6 +11,7 @@
 
 #include "mesh/mesh.hpp"
 #include "mesh/pool.hpp"
+#include "mesh/traverse.hpp"
 
 using namespace gpdr::mesh;
 
@@ -169,4 +170,44 @@ TEST_CASE("destroying a dead triangle is refused", "[mesh][pool]") {
     // The free list is intact: the slot comes back once.
     CHECK(pool.create(VertexId{0}, VertexId{1}, VertexId{2}) == t);
     CHECK(pool.create(VertexId{0}, VertexId{1}, VertexId{2}) != t);
+}
+
+TEST_CASE("the unused ends of lanes' chunks are known and passed over", "[mesh][pool]") {
+    constexpr std::uint32_t chunk = Mesh::TriangleTable::chunk_size;
+    Mesh mesh;
+    mesh.add_vertices(std::vector<Point>{{0, 0}, {1, 0}, {0, 1}}, VertexKind::input);
+    const Lane base = Lane::first(mesh, 2);
+    std::vector<TriangleId> made;
+    VertexId added = no_vertex;
+    {
+        Lane second = base;
+        second.index = 1;
+        Pool a(mesh, base), b(mesh, second);
+        for (int i = 0; i < 30; ++i)
+            made.push_back(a.create(VertexId{0}, VertexId{1}, VertexId{2}));
+        for (int i = 0; i < 5; ++i) made.push_back(b.create(VertexId{0}, VertexId{1}, VertexId{2}));
+        a.new_vertex({0.25, 0.25}, VertexKind::free);
+        added = b.new_vertex({0.5, 0.25}, VertexKind::free);
+        // While the pools hold their chunks' ends, the whole chunks count.
+        CHECK(mesh.triangle_chunk_used(0) == chunk);
+        CHECK(mesh.triangle_chunk_used(1) == chunk);
+    }
+    // Lane 0 took triangle chunk 0 and vertex chunk 1 (chunk 0 holds the
+    // input); lane 1 chunks 1 and 2.
+    CHECK(mesh.triangle_chunk_used(0) == 30);
+    CHECK(mesh.triangle_chunk_used(1) == 5);
+    CHECK(mesh.triangle_chunk_used(2) == chunk);  // never claimed: unknown
+    CHECK(index(added) == 2 * chunk);
+    CHECK(mesh.vertex_chunk_used(1) == 1);
+    // Lane 1's vertex chunk is the last: its end goes back to the mesh.
+    CHECK(mesh.vertex_end() == index(added) + 1);
+    CHECK(mesh.count_triangles() == 35);
+    std::vector<TriangleId> seen;
+    for_each_triangle(mesh, [&](TriangleId t, const Triangle&) { seen.push_back(t); });
+    CHECK(seen == made);
+
+    // A pool that takes a given-back end uses it again: it counts again.
+    Pool again(mesh);
+    const TriangleId t = again.create(VertexId{0}, VertexId{1}, VertexId{2});
+    CHECK(mesh.triangle_chunk_used(index(t) >> Mesh::triangle_chunk_bits) == chunk);
 }

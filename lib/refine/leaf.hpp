@@ -52,6 +52,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -209,11 +210,12 @@ public:
         note_pushed(at, 1);
     }
     // The lowest non-empty level, or -1.  (Stale entries count as entries.)
-    int lowest_level() {
-        const int used = static_cast<int>(levels_.size());
-        while (lowest_ < used && (!levels_[lowest_] || levels_[lowest_]->entries == 0)) ++lowest_;
-        if (lowest_ < used) return lowest_;
-        lowest_ = bucket_count;
+    // A bit per level: the flat leaf keeps its size bin on the top level,
+    // and a scan up to it after each edge bin's entry cost 1.5% of -j1's
+    // instructions.
+    int lowest_level() const {
+        for (std::size_t w = 0; w < occupied_.size(); ++w)
+            if (occupied_[w] != 0) return static_cast<int>(64 * w) + std::countr_zero(occupied_[w]);
         return -1;
     }
     // Takes from level j the first entry of its lowest non-empty bin (the
@@ -242,6 +244,7 @@ public:
         --poor_entries_;
         if (--l->entries == 0) {
             l->lowest_bin = bin_count + 1;
+            occupied_[static_cast<std::size_t>(j) / 64] &= ~(std::uint64_t{1} << (j % 64));
         } else {
             while (l->bins[l->lowest_bin].empty()) ++l->lowest_bin;
         }
@@ -301,7 +304,7 @@ public:
         heads_.clear();
         // The entries keep their order: the children count on from it.
         for (int c = 0; c < 4; ++c) children[c]->pushes_ = std::max(children[c]->pushes_, pushes_);
-        lowest_ = bucket_count;
+        occupied_ = {};
         poor_entries_ = 0;
         edge_entries_ = 0;
         for (std::size_t j = 0; j < levels.size(); ++j) {
@@ -353,7 +356,7 @@ public:
     void release() {
         std::vector<std::unique_ptr<Level>>().swap(levels_);
         std::vector<std::uint64_t>().swap(heads_);
-        lowest_ = bucket_count;
+        occupied_ = {};
         poor_entries_ = 0;
         edge_entries_ = 0;
         std::vector<QueuedSubsegment>().swap(subsegments_);
@@ -403,7 +406,7 @@ private:
             l.lowest_bin = at.bin;
             if (!flat_) note_head(at.level, l);
         }
-        if (at.level < lowest_) lowest_ = at.level;
+        occupied_[static_cast<std::size_t>(at.level) / 64] |= std::uint64_t{1} << (at.level % 64);
         if (at.bin != size_bin) edge_entries_ += n;
         poor_entries_ += n;
     }
@@ -432,8 +435,8 @@ private:
             h = (std::uint64_t(key + key_offset) << 32) | l.bins[b].items[l.bins[b].head].order;
         }
     }
-    std::uint32_t pushes_ = 0;  // QueuedTriangle::order
-    int lowest_ = bucket_count;
+    std::uint32_t pushes_ = 0;                                        // QueuedTriangle::order
+    std::array<std::uint64_t, (bucket_count + 63) / 64> occupied_{};  // bit j: level j has entries
     std::size_t poor_entries_ = 0;
     // Of them, in edge bins: while none, the window's first slot is the
     // lowest level's size bin, found without looking at the other levels.

@@ -34,7 +34,8 @@ namespace gpdr::refine {
 // apex), as Triangle's vertex records do; area > 0.  gpdr passes copies, so
 // a test that writes through them changes nothing.  Non-zero: the triangle is too big / unsuitable,
 // refine it.  A function object, so that a library caller's test can carry its own data.
-using UserTest = std::function<int(double* org, double* dest, double* apex, double area)>;
+using UserFunction = int(double* org, double* dest, double* apex, double area);
+using UserTest = std::function<UserFunction>;
 
 // Calls `test` on triangle r of the mesh (area > 0) with each corner as
 // Triangle's vertex record: x, y, then the vertex's attributes.
@@ -129,6 +130,10 @@ private:
     bool angle_test_ = false;
     double lens_ = 0.0;
     bool area_test_ = false;
+    // The user test when it is a plain function (a triunsuitable() from a
+    // plugin or linked in): called directly, without std::function's
+    // second indirection.
+    UserFunction* user_function_ = nullptr;
 };
 
 }  // namespace gpdr::refine

@@ -11,6 +11,9 @@
 // Vertices: ids come from a block the pool claimed from the mesh; at the
 // end, the unused tail of the block is returned if nobody claimed after it
 // (always so with one thread), otherwise those ids stay `unused` holes.
+// The unused ends of a lane pool's last chunks, triangles' and vertices',
+// are recorded by the mesh when the pool is destroyed, so that passes over
+// the finished mesh stop where each chunk's used part ends.
 //
 // A pool on a LANE (the deterministic parallel refiner's) claims by a fixed
 // rule instead: lane k of n takes triangle chunks and vertex chunks

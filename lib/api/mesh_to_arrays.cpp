@@ -188,6 +188,29 @@ struct TriangleWalk {
 // joined in slot order; with neighbours a second pass adds to each chunk's
 // numbers the triangles before it.
 constexpr std::uint32_t stride = 4096;
+
+// The walk over one chunk's slots `ids`: its triangles counted from 0, its
+// anchors and edges, and with `numbers` each triangle's number within it.
+void walk_chunk(const mesh::Mesh& mesh, mesh::ChunkIds ids, TriangleNumbers* numbers,
+                TriangleWalk& part) {
+    mesh::for_each_triangle_in(
+        mesh, ids.first, ids.last, [&](mesh::TriangleId id, const mesh::Triangle& t) {
+            if (part.count % stride == 0) part.anchors.push_back({part.count, index(id)});
+            if (numbers != nullptr) (*numbers)[index(id)] = part.count;
+            ++part.count;
+            for (int k = 0; k < 3; ++k) {
+                const mesh::EdgeRef across = t.n[k];
+                const bool on_hull = across.is_none();
+                // The edge is listed from its triangle with the lower id.
+                if (!on_hull && index(across.triangle()) < index(id)) continue;
+                if (!on_hull && !t.is_subsegment(k)) continue;
+                const MeshEdge e{index(t.v[mesh::next3(k)]), index(t.v[mesh::prev3(k)]), on_hull};
+                if (on_hull) part.hull.push_back(e);
+                if (t.is_subsegment(k)) part.subsegments.push_back(e);
+            }
+        });
+}
+
 TriangleWalk walk_triangles(const mesh::Mesh& mesh, bool with_neighbours,
                             TriangleNumbers& triangle_number, unsigned threads) {
     constexpr unsigned bits = TriangleNumbers::bits;
@@ -203,28 +226,7 @@ TriangleWalk walk_triangles(const mesh::Mesh& mesh, bool with_neighbours,
                 std::min(ids.last, ids.first + mesh.triangle_chunk_used(chunks[i]));
             for (std::uint32_t id = ids.first; id < used; ++id) triangle_number[id] = none;
         }
-        std::uint32_t count = 0;
-        mesh::for_each_triangle_in(mesh, ids.first, ids.last,
-                                   [&](mesh::TriangleId id, const mesh::Triangle& t) {
-                                       if (count % stride == 0)
-                                           part.anchors.push_back({count, index(id)});
-                                       if (with_neighbours) triangle_number[index(id)] = count;
-                                       ++count;
-                                       for (int k = 0; k < 3; ++k) {
-                                           const mesh::EdgeRef across = t.n[k];
-                                           const bool on_hull = across.is_none();
-                                           // The edge is listed from its triangle with the lower
-                                           // id.
-                                           if (!on_hull && index(across.triangle()) < index(id))
-                                               continue;
-                                           if (!on_hull && !t.is_subsegment(k)) continue;
-                                           const MeshEdge e{index(t.v[mesh::next3(k)]),
-                                                            index(t.v[mesh::prev3(k)]), on_hull};
-                                           if (on_hull) part.hull.push_back(e);
-                                           if (t.is_subsegment(k)) part.subsegments.push_back(e);
-                                       }
-                                   });
-        part.count = count;
+        walk_chunk(mesh, ids, with_neighbours ? &triangle_number : nullptr, part);
     });
     TriangleWalk all;
     std::vector<std::uint32_t> before(chunks.size(), 0);  // triangles before each chunk

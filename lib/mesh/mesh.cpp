@@ -2,6 +2,7 @@
 // chunks, taking back what finished pools did not use).
 
 #include "mesh/mesh.hpp"
+#include "mesh/traverse.hpp"
 
 #include <string>
 
@@ -81,13 +82,7 @@ VertexId Mesh::add_vertices(std::span<const Point> points, VertexKind kind) {
 
 std::size_t Mesh::count_triangles() const {
     std::size_t live = 0;
-    const std::uint32_t end = triangle_end();
-    for (std::uint32_t t = 0; t < end; t += TriangleTable::chunk_size) {
-        const std::uint32_t c = t >> triangle_chunk_bits;
-        if (!triangles_.has_chunk(c)) continue;  // (never claimed)
-        for (std::uint32_t i = t; i < t + triangle_chunk_used(c); ++i)
-            live += triangles_[i].live() ? 1 : 0;
-    }
+    for_each_triangle(*this, [&live](TriangleId, const Triangle&) { ++live; });
     return live;
 }
 

@@ -102,7 +102,7 @@ std::string help_text() {
            "                         every run.  -j1 refines on the calling thread alone in\n"
            "                         Triangle's order (a mesh of its own), as does -S (its\n"
            "                         limit is exact only there), and so does every N with\n"
-           "                         -q above 30 degrees (there the order decides whether\n"
+           "                         -q above 33 degrees (there the order decides whether\n"
            "                         refinement ends).  At most 64 threads refine.\n"
            "                         With -V, the rounds and where each thread's time went.\n"
            "                         The output files are written, and -V's statistics\n"

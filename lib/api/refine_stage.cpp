@@ -73,7 +73,7 @@ std::vector<std::string> refine(mesh::Mesh& mesh, const refine::RefineSettings& 
     p.granularity = o.granularity;
     // -j1 runs the sequential refiner (one leaf, no quadtree, Triangle's
     // order).  So does -S, whose limit is exact only on one thread, and so
-    // does an angle bound above 30 degrees (max_quadtree_angle).  -j0 on a
+    // does an angle bound above 33 degrees (max_quadtree_angle).  -j0 on a
     // machine with one hardware thread runs the rounds on it: the same mesh
     // as -j0 anywhere else.
     const bool high_angle = o.quality && o.min_angle > parallel::max_quadtree_angle;

@@ -337,7 +337,7 @@ void refine_parallel(mesh::Mesh& mesh, const refine::RefineSettings& settings_in
                 mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]));
             q.where = w.where(m.circle.centre);
             w.push_poor(q, w.slot(m.circle.radius_squared, m.shortest.length_squared,
-                                  refine::queued_by_shape(run.quality(), m)));
+                                  refine::poor_kind(run.quality(), m)));
         }
         w.handed_off_triangles.clear();
     }

@@ -118,15 +118,15 @@ inline constexpr int order_levels_beyond_split = 4;
 inline constexpr std::uint64_t blocked_batch = 4096;
 
 // The largest angle bound (-q) the quadtree refines; above it every thread
-// count runs the sequential refiner, in Triangle's order.  Above 30 degrees
+// count runs the sequential refiner, in Triangle's order.  Near 34 degrees
 // the order decides whether refinement ends at all, and the leaves' windows
-// of σ levels take large triangles before small ones: -j2 made up to 1.65
-// times -j1's triangles at 31-33 degrees on a coastline of 20,000 segments,
-// and from 3.7 to 69 times at 34 (the crossing model under -a; a coastline
-// of 100,000 segments), where the safety stop ends it.  With an area bound
-// the leaves near the root took nearly all the work anyway (flow
-// -pq33a2e-4: -j2 1.2 times -j1's time).  docs/refinement-order.md.
-inline constexpr double max_quadtree_angle = 30.0;
+// cannot keep Triangle's order across leaves: at 33.5 degrees -j2 made up
+// to 1.21 times -j1's triangles on the generated models under -a, and at
+// 34 up to 3.5 times, or 75 times (flow under -a, 100,000 triangles by the
+// bound), where the safety stop ends it.  Up to 33 degrees: 0.96-1.14
+// times, refined about twice as fast as one thread on meshes of millions
+// of triangles.  docs/refinement-order.md.
+inline constexpr double max_quadtree_angle = 33.0;
 
 // Refines `mesh` (the input refine::refine_mesh takes) in parallel.  Throws
 // what refine_mesh throws; a worker's exception is rethrown on the calling

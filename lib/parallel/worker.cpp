@@ -306,7 +306,7 @@ void Worker::route_triangle(refine::QueuedTriangle q, bool steiner_point_if_cent
     r.at = m.circle.centre;
     r.radius_squared = m.circle.radius_squared;
     r.shortest_squared = m.shortest.length_squared;
-    r.by_shape = refine::queued_by_shape(run_.quality(), m);
+    r.kind = refine::poor_kind(run_.quality(), m);
     // Classification routes by circumcentre, refinement by the Steiner
     // point f(t): a triangle handed off although its centre is inside was
     // handed off for its Steiner point, and one kept although its centre is
@@ -443,10 +443,11 @@ bool Worker::run(NodeId leaf, std::int32_t tag, const std::vector<NodeId>& balan
     // the split, if its work now belongs to its children.  Before the
     // window, while the leaf's count keeps it from splitting, its triangles
     // poor by their angle at every level (refine_while_blocked).  (Size-only
-    // triangles in the size bin, up to 30 degrees, stay in the leaf's own
-    // levels: taking them four levels further made area-bound runs 1.2-1.6
-    // times slower for the same counts.  Above 30 degrees they wait in the
-    // edge bins and go with the angle window: QualityTest::stacks_size_only.)
+    // triangles stay in the leaf's own levels, in the size bin up to 30
+    // degrees and in the size edge bins above (PoorKind): taking them four
+    // levels further made area-bound runs 1.2-1.6 times slower for the same
+    // counts up to 30 degrees, and kept the leaves from splitting at all
+    // above: flow -pq33a2e-4 refined as slowly on two threads as on one.)
     const int own_levels = 1 + granularity_at(n);
     const int last_level =
         1 + static_cast<int>(run_.settings().granularity) + order_levels_beyond_split;

@@ -41,7 +41,7 @@ struct Routed {
     Point at;                     // the point that decides the leaf
     double radius_squared = 0;    // triangles: for the target leaf's slot,
     double shortest_squared = 0;  // with the shortest edge²
-    bool by_shape = false;        // and refine::queued_by_shape
+    refine::PoorKind kind{};      // and refine::poor_kind
 };
 
 // Puts routed work into a leaf's lists (the worker for its own zone, the
@@ -50,7 +50,7 @@ inline void push(refine::Leaf& work, const Routed& r) {
     if (r.is_triangle) {
         refine::QueuedTriangle q = r.triangle;
         q.where = work.where(r.at);
-        work.push_poor(q, work.slot(r.radius_squared, r.shortest_squared, r.by_shape));
+        work.push_poor(q, work.slot(r.radius_squared, r.shortest_squared, r.kind));
     } else {
         work.push_subsegment(r.subsegment);
     }

@@ -23,7 +23,11 @@
 // of a square under -a alone about 1.3 times slower.)  The triangles one
 // insertion makes are pushed shortest edge last (LeafRefiner::
 // queue_size_only), so that the bin takes them shortest first, and the
-// meshes are as small as the edge bins' (docs/refinement-order.md).
+// meshes are as small as the edge bins' (docs/refinement-order.md).  Above
+// 30 degrees they wait by their shortest edge like the others (PoorKind::
+// size_edges): in a flat leaf, in the same edge bins; in a quadtree leaf,
+// in size edge bins of their own, taken in the same order as the edge bins
+// but only within the leaf's own levels, as the size bin is.
 //
 // A flat leaf (the sequential refiner, Leaf::flat) has no σ levels: its
 // level is the top bits of the bin number, so the order is exactly the one
@@ -100,6 +104,21 @@ struct PoorSlot {
     int bin = 0;
 };
 
+// How a poor triangle waits (Leaf::slot).
+enum class PoorKind : std::uint8_t {
+    angle,  // poor by its angle: by its shortest edge, in the edge bins
+    // Poor only by size (area bound, user test), where they may wait apart
+    // (QualityTest::stacks_size_only): the size bin, last in, first out.
+    size,
+    // Poor only by size, where they may not: by the shortest edge like the
+    // others.  A flat leaf files them in the edge bins; a quadtree leaf in
+    // size edge bins of their own, which its runs take in the same order
+    // as the edge bins but only within the leaf's own levels (first_slot's
+    // last_size_level), so that the size of the mesh does not hold a leaf
+    // back from splitting.
+    size_edges,
+};
+
 class Leaf {
 public:
     static constexpr int bucket_count = 128;  // levels
@@ -107,6 +126,9 @@ public:
     // The bin of a level that holds the triangles poor only by size (last
     // in, first out, after every other bin of the level).
     static constexpr int size_bin = bin_count;
+    // PoorSlot::bin of a quadtree leaf's size edge bin 0 (PoorKind::
+    // size_edges); size edge bin i stands for the same edges as edge bin i.
+    static constexpr int size_edges_base = size_bin + 1;
 
     // A quadtree leaf of side `side` (levels by σ).
     explicit Leaf(double side = 1.0)
@@ -139,21 +161,21 @@ public:
         return s < bucket_count - 1 ? s : bucket_count - 2;
     }
     // The slot of a poor triangle with circumradius² radius_squared and
-    // shortest edge² shortest_squared; by_shape: poor by its angle (else
-    // only by size: the size bin).
-    PoorSlot slot(double radius_squared, double shortest_squared, bool by_shape) const {
+    // shortest edge² shortest_squared, of the given kind.
+    PoorSlot slot(double radius_squared, double shortest_squared, PoorKind kind) const {
         if (flat_) {
-            if (!by_shape) return {bucket_count - 1, size_bin};
+            if (kind == PoorKind::size) return {bucket_count - 1, size_bin};
             // Bins -2044 .. 2048 (edge_bin's range), shortest first.
             const int key = edge_bin(shortest_squared) + 2 * 1022;
             return {key / bin_count, key % bin_count};
         }
         const int level = sigma(radius_squared);
-        if (!by_shape) return {level, size_bin};
+        if (kind == PoorKind::size) return {level, size_bin};
         // From the shortest edges (bin 0: bin_count - 1 bins or more below
         // the level's top) to the longest (bin_count - 1).
         const int below_top = top_bin_ - 4 * level - edge_bin(shortest_squared);
-        return {level, bin_count - 1 - std::clamp(below_top, 0, bin_count - 1)};
+        const int b = bin_count - 1 - std::clamp(below_top, 0, bin_count - 1);
+        return {level, kind == PoorKind::angle ? b : size_edges_base + b};
     }
 
     // The leaf's square's lower left corner (parallel layer): from then on
@@ -219,14 +241,25 @@ public:
         return -1;
     }
     // Takes from level j the first entry of its lowest non-empty bin (the
-    // newest of the size bin), and says where it was in *at.
+    // newest of the size bin; of the edge bins and size edge bins, the
+    // head first_slot would take), and says where it was in *at.
     bool pop_poor(int j, QueuedTriangle& q, PoorSlot* at = nullptr) {
         if (j < 0 || static_cast<std::size_t>(j) >= levels_.size()) return false;
-        Level* l = levels_[static_cast<std::size_t>(j)].get();
+        const Level* l = levels_[static_cast<std::size_t>(j)].get();
         if (!l || l->entries == 0) return false;
-        if (at != nullptr) *at = {j, l->lowest_bin};
-        Bin& b = l->bins[l->lowest_bin];
-        if (l->lowest_bin == size_bin) {
+        PoorSlot from{j, l->lowest_bin};
+        if (has_size_edges_ &&
+            size_edge_heads_[static_cast<std::size_t>(j)] < heads_[static_cast<std::size_t>(j)])
+            from.bin = size_edges_base + l->lowest_size_edge;
+        pop_at(from, q);
+        if (at != nullptr) *at = from;
+        return true;
+    }
+    // Takes the first entry of the slot `at` that first_slot gave.
+    void pop_at(PoorSlot at, QueuedTriangle& q) {
+        Level& l = *levels_[static_cast<std::size_t>(at.level)];
+        Bin& b = l.bin(at.bin);
+        if (at.bin == size_bin) {
             q = b.items.back();
             b.items.pop_back();
         } else {
@@ -239,25 +272,32 @@ public:
                 b.items.erase(b.items.begin(), b.items.begin() + static_cast<long>(b.head));
                 b.head = 0;
             }
+            --edge_entries_;
         }
-        if (l->lowest_bin != size_bin) --edge_entries_;
         --poor_entries_;
-        if (--l->entries == 0) {
-            l->lowest_bin = bin_count + 1;
-            occupied_[static_cast<std::size_t>(j) / 64] &= ~(std::uint64_t{1} << (j % 64));
+        if (--l.entries == 0) {
+            l.lowest_bin = bin_count + 1;
+            l.lowest_size_edge = bin_count;
+            occupied_[static_cast<std::size_t>(at.level) / 64] &=
+                ~(std::uint64_t{1} << (at.level % 64));
+        } else if (at.bin <= size_bin) {
+            while (l.lowest_bin <= size_bin && l.bins[l.lowest_bin].empty()) ++l.lowest_bin;
         } else {
-            while (l->bins[l->lowest_bin].empty()) ++l->lowest_bin;
+            while (l.lowest_size_edge < bin_count && (*l.size_edges)[l.lowest_size_edge].empty())
+                ++l.lowest_size_edge;
         }
-        if (!flat_) note_head(j, *l);
-        return true;
+        if (flat_) return;
+        if (at.bin <= size_bin || l.entries == 0) note_head(at.level, l);
+        if (at.bin > size_bin) note_size_edge_head(at.level, l);
     }
     std::size_t poor_entries() const { return poor_entries_; }
 
     // The slot to take first among levels lowest_level() .. last_level, the
-    // size bins only up to last_size_level: a flat leaf's lowest; a quadtree
-    // leaf's by shortest edge over the levels (edge bins compared across
-    // levels; size bins after every edge bin, lowest level first).  False
-    // when those levels hold nothing.
+    // size bins and size edge bins only up to last_size_level: a flat
+    // leaf's lowest; a quadtree leaf's by shortest edge over the levels
+    // (edge bins and size edge bins compared across levels; size bins after
+    // every edge bin, lowest level first).  False when those levels hold
+    // nothing.
     bool first_slot(int last_level, PoorSlot& at, int last_size_level = bucket_count) {
         const int lowest = lowest_level();
         if (lowest < 0 || lowest > last_level) return false;
@@ -273,15 +313,26 @@ public:
         const int last = std::min(last_level, static_cast<int>(levels_.size()) - 1);
         std::uint64_t best = empty_head;
         int best_level = -1;
+        bool best_is_size_edge = false;
         for (int j = lowest; j <= last; ++j) {
             const std::uint64_t h = heads_[static_cast<std::size_t>(j)];
             if (h < best && (h < size_heads || j <= last_size)) {
                 best = h;
                 best_level = j;
+                best_is_size_edge = false;
+            }
+            if (has_size_edges_ && j <= last_size) {
+                const std::uint64_t e = size_edge_heads_[static_cast<std::size_t>(j)];
+                if (e < best) {
+                    best = e;
+                    best_level = j;
+                    best_is_size_edge = true;
+                }
             }
         }
         if (best_level < 0) return false;
-        at = {best_level, levels_[static_cast<std::size_t>(best_level)]->lowest_bin};
+        const Level& l = *levels_[static_cast<std::size_t>(best_level)];
+        at = {best_level, best_is_size_edge ? size_edges_base + l.lowest_size_edge : l.lowest_bin};
         return true;
     }
 
@@ -302,6 +353,7 @@ public:
         std::vector<std::unique_ptr<Level>> levels;
         levels.swap(levels_);
         heads_.clear();
+        size_edge_heads_.clear();
         // The entries keep their order: the children count on from it.
         for (int c = 0; c < 4; ++c) children[c]->pushes_ = std::max(children[c]->pushes_, pushes_);
         occupied_ = {};
@@ -312,9 +364,8 @@ public:
             if (!l || l->entries == 0) continue;
             const int jj = static_cast<int>(j);
             const int child_level = jj == 0 || jj == bucket_count - 1 ? jj : jj - 1;
-            for (int r = l->lowest_bin; r <= size_bin; ++r) {
-                const Bin& b = l->bins[r];
-                if (b.empty()) continue;
+            const auto move_bin = [&](const Bin& b, int r) {
+                if (b.empty()) return;
                 std::vector<QueuedTriangle>* into[4] = {nullptr, nullptr, nullptr, nullptr};
                 std::size_t moved[4] = {0, 0, 0, 0};
                 const auto move = [&](QueuedTriangle q) {
@@ -334,7 +385,10 @@ public:
                     for (std::size_t i = b.head; i < b.items.size(); ++i) move(b.items[i]);
                 for (int c = 0; c < 4; ++c)
                     if (moved[c] != 0) children[c]->note_pushed({child_level, r}, moved[c]);
-            }
+            };
+            for (int r = l->lowest_bin; r <= size_bin; ++r) move_bin(l->bins[r], r);
+            for (int i = l->lowest_size_edge; i < bin_count; ++i)
+                move_bin((*l->size_edges)[i], size_edges_base + i);
         }
     }
 
@@ -356,6 +410,7 @@ public:
     void release() {
         std::vector<std::unique_ptr<Level>>().swap(levels_);
         std::vector<std::uint64_t>().swap(heads_);
+        std::vector<std::uint64_t>().swap(size_edge_heads_);
         occupied_ = {};
         poor_entries_ = 0;
         edge_entries_ = 0;
@@ -385,8 +440,17 @@ private:
     };
     struct Level {
         std::array<Bin, bin_count + 1> bins;  // the last: the size bin
-        int lowest_bin = bin_count + 1;
+        // The size edge bins (PoorKind::size_edges in a quadtree leaf), made
+        // on first use: up to 30 degrees no leaf has them.
+        std::unique_ptr<std::array<Bin, bin_count>> size_edges;
+        int lowest_bin = bin_count + 1;    // of bins; bin_count + 1: none
+        int lowest_size_edge = bin_count;  // of *size_edges; bin_count: none
         std::size_t entries = 0;
+        // PoorSlot::bin's bin.
+        Bin& bin(int b) {
+            if (b <= size_bin) return bins[static_cast<std::size_t>(b)];
+            return (*size_edges)[static_cast<std::size_t>(b - size_edges_base)];
+        }
     };
     // The bin at `at`, made if missing; entries pushed straight into it are
     // then counted by note_pushed.
@@ -394,15 +458,28 @@ private:
         if (static_cast<std::size_t>(at.level) >= levels_.size()) {
             levels_.resize(static_cast<std::size_t>(at.level) + 1);
             if (!flat_) heads_.resize(levels_.size(), empty_head);
+            if (has_size_edges_) size_edge_heads_.resize(levels_.size(), empty_head);
         }
         auto& l = levels_[static_cast<std::size_t>(at.level)];
         if (!l) l = std::make_unique<Level>();
-        return l->bins[static_cast<std::size_t>(at.bin)];
+        if (at.bin > size_bin && !l->size_edges) {
+            l->size_edges = std::make_unique<std::array<Bin, bin_count>>();
+            if (!has_size_edges_) {
+                has_size_edges_ = true;
+                size_edge_heads_.resize(levels_.size(), empty_head);
+            }
+        }
+        return l->bin(at.bin);
     }
     void note_pushed(PoorSlot at, std::size_t n) {
         Level& l = *levels_[static_cast<std::size_t>(at.level)];
         l.entries += n;
-        if (at.bin < l.lowest_bin) {
+        if (at.bin > size_bin) {
+            if (at.bin - size_edges_base < l.lowest_size_edge) {
+                l.lowest_size_edge = at.bin - size_edges_base;
+                note_size_edge_head(at.level, l);
+            }
+        } else if (at.bin < l.lowest_bin) {
             l.lowest_bin = at.bin;
             if (!flat_) note_head(at.level, l);
         }
@@ -423,6 +500,18 @@ private:
     static constexpr std::int64_t size_key = std::int64_t{1} << 20;
     static constexpr std::uint64_t size_heads = std::uint64_t(size_key + key_offset) << 32;
     std::vector<std::uint64_t> heads_;
+    // The same for each level's size edge bins (while has_size_edges_).
+    std::vector<std::uint64_t> size_edge_heads_;
+    bool has_size_edges_ = false;
+    std::uint64_t edge_head(int j, const Bin& b, int edge_bin_index) const {
+        const std::int64_t key = top_bin_ - 4L * j - (bin_count - 1 - edge_bin_index);
+        return (std::uint64_t(key + key_offset) << 32) | b.items[b.head].order;
+    }
+    void note_size_edge_head(int j, const Level& l) {
+        const int b = l.lowest_size_edge;
+        size_edge_heads_[static_cast<std::size_t>(j)] =
+            b >= bin_count ? empty_head : edge_head(j, (*l.size_edges)[b], b);
+    }
     void note_head(int j, const Level& l) {
         std::uint64_t& h = heads_[static_cast<std::size_t>(j)];
         const int b = l.lowest_bin;
@@ -431,8 +520,7 @@ private:
         } else if (b == size_bin) {
             h = std::uint64_t(size_key + j + key_offset) << 32;
         } else {
-            const std::int64_t key = top_bin_ - 4L * j - (bin_count - 1 - b);
-            h = (std::uint64_t(key + key_offset) << 32) | l.bins[b].items[l.bins[b].head].order;
+            h = edge_head(j, l.bins[b], b);
         }
     }
     std::uint32_t pushes_ = 0;                                        // QueuedTriangle::order

@@ -175,7 +175,7 @@ void LeafRefiner::classify(Leaf& leaf, TriangleId t, const TriangleMeasures& m) 
         // itself is checked again before it is inserted.
         if (leaf.owns(m.circle.centre)) {
             const PoorSlot at =
-                leaf.slot(m.circle.radius_squared, m.shortest.length_squared, by_shape(m));
+                leaf.slot(m.circle.radius_squared, m.shortest.length_squared, kind(m));
             if (holding_size_only_ && at.bin == Leaf::size_bin)
                 size_only_.push_back({q, at, m.shortest.length_squared});
             else
@@ -297,7 +297,7 @@ bool LeafRefiner::refine_levels(Leaf& leaf, int last_level, int last_size_level,
             --*takes_left;
         }
         QueuedTriangle q;
-        leaf.pop_poor(at.level, q, &at);
+        leaf.pop_at(at, q);
         const mesh::Triangle& r = mesh_.triangle(q.id);
         if (r.load_generation() != q.generation || !r.live())
             continue;  // stale (generation first: see Triangle)

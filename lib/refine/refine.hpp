@@ -169,11 +169,13 @@ public:
                                   const geometry::Circle& circumcircle) = 0;
 };
 
-// Whether a poor triangle with measures m waits in a bin by its shortest
-// edge (else it is poor only by size and waits in its level's size bin;
-// see QualityTest::stacks_size_only).
-inline bool queued_by_shape(const QualityTest& quality, const TriangleMeasures& m) {
-    return !quality.stacks_size_only() || quality.bad_shape(m);
+// How a poor triangle with measures m waits in a leaf (Leaf::slot): by
+// its shortest edge if poor by its angle; else, poor only by size, in its
+// level's size bin where the order of such triangles may differ from the
+// others' (QualityTest::stacks_size_only), by its shortest edge where not.
+inline PoorKind poor_kind(const QualityTest& quality, const TriangleMeasures& m) {
+    if (quality.bad_shape(m)) return PoorKind::angle;
+    return quality.stacks_size_only() ? PoorKind::size : PoorKind::size_edges;
 }
 
 // One thread's refiner: owns the pool, insertion buffer and scratch.
@@ -234,7 +236,7 @@ private:
     void split_instead(Leaf& leaf, QueuedTriangle q, PoorSlot at, mesh::EdgeRef e);
     void split_queued_then_requeue(Leaf& leaf, QueuedTriangle q, PoorSlot at);
     bool alive(QueuedTriangle q) const;
-    bool by_shape(const TriangleMeasures& m) const { return queued_by_shape(quality_, m); }
+    PoorKind kind(const TriangleMeasures& m) const { return poor_kind(quality_, m); }
     bool split_subsegment(Leaf& leaf, mesh::EdgeRef e);
     bool may_split(mesh::EdgeRef e) const;
     bool budget_left();

@@ -39,13 +39,15 @@ struct Family {
     }
 };
 
-// What a run with window levels lowest .. last_level takes, in order
-// (Leaf::first_slot across the levels, as LeafRefiner::refine_levels).
-std::vector<std::uint32_t> drain_window(Leaf& leaf, int last_level) {
+// What a run with window levels lowest .. last_level (size bins and size
+// edge bins up to last_size_level) takes, in order (Leaf::first_slot across
+// the levels, as LeafRefiner::refine_levels).
+std::vector<std::uint32_t> drain_window(Leaf& leaf, int last_level,
+                                        int last_size_level = Leaf::bucket_count) {
     std::vector<std::uint32_t> out;
-    for (PoorSlot at; leaf.first_slot(last_level, at);) {
+    for (PoorSlot at; leaf.first_slot(last_level, at, last_size_level);) {
         QueuedTriangle q{};
-        REQUIRE(leaf.pop_poor(at.level, q));
+        leaf.pop_at(at, q);
         out.push_back(q.generation);
     }
     return out;
@@ -81,7 +83,7 @@ TEST_CASE("a flat leaf gives the shortest edges' bin first, first in first out w
     // Entry i has shortest edge² lengths[i]; circumradii do not matter.
     const std::vector<double> lengths = {4.0, 1.0, 1.1, 0.25, 4.5, 1.2, 0.26, 1e-6, 1e6, 1.3};
     for (std::uint32_t i = 0; i < lengths.size(); ++i)
-        leaf.push_poor(entry(i), leaf.slot(1e9 * (i + 1), lengths[i], true));
+        leaf.push_poor(entry(i), leaf.slot(1e9 * (i + 1), lengths[i], PoorKind::angle));
     // Bins: 0.25, 0.26 -> -4; 1.0, 1.1, 1.2, 1.3 -> 0; 4.0, 4.5 -> 4.
     CHECK(drain(leaf) == std::vector<std::uint32_t>{7, 3, 6, 1, 2, 5, 9, 0, 4, 8});
     CHECK(leaf.idle());
@@ -99,7 +101,7 @@ TEST_CASE("a flat leaf takes the bins in order however the pushes interleave", "
     for (int step = 0; step < 20000; ++step) {
         if (random() % 3 != 0 || leaf.poor_entries() == 0) {
             length.push_back(std::exp2(exponent(random)));
-            leaf.push_poor(entry(next), leaf.slot(1.0, length[next], true));
+            leaf.push_poor(entry(next), leaf.slot(1.0, length[next], PoorKind::angle));
             ++next;
             last_bin = -100000;  // a push may open a lower bin
             continue;
@@ -128,23 +130,23 @@ TEST_CASE("a flat leaf takes the bins in order however the pushes interleave", "
 
 TEST_CASE("size-only triangles come after every bin, newest first", "[refine][order]") {
     Leaf leaf = Leaf::flat();
-    leaf.push_poor(entry(0), leaf.slot(1.0, 1.0, false));
-    leaf.push_poor(entry(1), leaf.slot(1.0, 1e3, true));
-    leaf.push_poor(entry(2), leaf.slot(1.0, 1e-3, false));
-    leaf.push_poor(entry(3), leaf.slot(1.0, 1e-3, true));
+    leaf.push_poor(entry(0), leaf.slot(1.0, 1.0, PoorKind::size));
+    leaf.push_poor(entry(1), leaf.slot(1.0, 1e3, PoorKind::angle));
+    leaf.push_poor(entry(2), leaf.slot(1.0, 1e-3, PoorKind::size));
+    leaf.push_poor(entry(3), leaf.slot(1.0, 1e-3, PoorKind::angle));
     CHECK(drain(leaf) == std::vector<std::uint32_t>{3, 1, 2, 0});
 }
 
 TEST_CASE("a quadtree leaf orders by σ level, then by shortest edge", "[refine][order]") {
     Leaf leaf(16.0);
     // σ = floor(log2(16 / r)): r = 8 -> 1, r = 2 -> 3.
-    leaf.push_poor(entry(0), leaf.slot(4.0, 1.0, true));     // σ 3, l² 1
-    leaf.push_poor(entry(1), leaf.slot(64.0, 16.0, true));   // σ 1, l² 16
-    leaf.push_poor(entry(2), leaf.slot(64.0, 1.0, true));    // σ 1, l² 1
-    leaf.push_poor(entry(3), leaf.slot(4.0, 0.01, true));    // σ 3, l² 0.01
-    leaf.push_poor(entry(4), leaf.slot(64.0, 1.0, false));   // σ 1, size only
-    leaf.push_poor(entry(5), leaf.slot(64.0, 1.01, true));   // σ 1, l² 1 (same bin as 2)
-    leaf.push_poor(entry(6), leaf.slot(64.0, 1e-30, true));  // σ 1, below the last bin
+    leaf.push_poor(entry(0), leaf.slot(4.0, 1.0, PoorKind::angle));    // σ 3, l² 1
+    leaf.push_poor(entry(1), leaf.slot(64.0, 16.0, PoorKind::angle));  // σ 1, l² 16
+    leaf.push_poor(entry(2), leaf.slot(64.0, 1.0, PoorKind::angle));   // σ 1, l² 1
+    leaf.push_poor(entry(3), leaf.slot(4.0, 0.01, PoorKind::angle));   // σ 3, l² 0.01
+    leaf.push_poor(entry(4), leaf.slot(64.0, 1.0, PoorKind::size));    // σ 1, size only
+    leaf.push_poor(entry(5), leaf.slot(64.0, 1.01, PoorKind::angle));  // σ 1, l² 1 (same bin as 2)
+    leaf.push_poor(entry(6), leaf.slot(64.0, 1e-30, PoorKind::angle));  // σ 1, below the last bin
     CHECK(drain(leaf) == std::vector<std::uint32_t>{6, 2, 5, 1, 4, 3, 0});
 }
 
@@ -155,7 +157,8 @@ TEST_CASE("a split keeps each bin's order in the children", "[refine][order]") {
     for (std::uint32_t i = 0; i < 6; ++i) {
         QueuedTriangle q = entry(i);
         q.where = parent.where({1.0 + 0.1 * i, 1.0});
-        parent.push_poor(q, parent.slot(2.25, i % 2 ? 0.5 : 0.01, i < 4));
+        parent.push_poor(
+            q, parent.slot(2.25, i % 2 ? 0.5 : 0.01, i < 4 ? PoorKind::angle : PoorKind::size));
     }
     int used_up = 0;
     parent.move_poor_to_children(f.child_pointers, [&](QueuedTriangle) { ++used_up; });
@@ -175,35 +178,81 @@ TEST_CASE("after a split, a child takes equal edge bins first in, first out", "[
     for (std::uint32_t i = 0; i < 3; ++i) {
         QueuedTriangle q = entry(i);
         q.where = parent.where({i < 2 ? 5.0 : 1.0, 1.0});
-        parent.push_poor(q, parent.slot(2.25, 0.25, true));
+        parent.push_poor(q, parent.slot(2.25, 0.25, PoorKind::angle));
     }
     parent.move_poor_to_children(f.child_pointers, [](QueuedTriangle) {});
     // Queued in the child after the split, at σ 2 there (r = 0.75), in the
     // same edge bin: it comes after entry 2, which the child counts on from.
-    c0.push_poor(entry(3), c0.slot(0.5625, 0.25, true));
+    c0.push_poor(entry(3), c0.slot(0.5625, 0.25, PoorKind::angle));
     CHECK(drain_window(c0, Leaf::bucket_count - 1) == std::vector<std::uint32_t>{2, 3});
 }
 
 TEST_CASE("a quadtree leaf's window is taken by shortest edge across its levels",
           "[refine][order]") {
     Leaf leaf(16.0);
-    leaf.push_poor(entry(0), leaf.slot(64.0, 16.0, true));           // σ 1, l² 16
-    leaf.push_poor(entry(1), leaf.slot(4.0, 1.0, true));             // σ 3, l² 1
-    leaf.push_poor(entry(2), leaf.slot(64.0, 1.0, true));            // σ 1, l² 1
-    leaf.push_poor(entry(3), leaf.slot(0.01, 0.001, true));          // σ 7, l² 0.001
-    leaf.push_poor(entry(4), leaf.slot(4.0, 2.0, false));            // σ 3, size only
-    leaf.push_poor(entry(5), leaf.slot(64.0, 2.0, false));           // σ 1, size only
-    const std::vector<std::uint32_t> taken = drain_window(leaf, 4);  // the window: σ 1 .. 4
+    leaf.push_poor(entry(0), leaf.slot(64.0, 16.0, PoorKind::angle));   // σ 1, l² 16
+    leaf.push_poor(entry(1), leaf.slot(4.0, 1.0, PoorKind::angle));     // σ 3, l² 1
+    leaf.push_poor(entry(2), leaf.slot(64.0, 1.0, PoorKind::angle));    // σ 1, l² 1
+    leaf.push_poor(entry(3), leaf.slot(0.01, 0.001, PoorKind::angle));  // σ 7, l² 0.001
+    leaf.push_poor(entry(4), leaf.slot(4.0, 2.0, PoorKind::size));      // σ 3, size only
+    leaf.push_poor(entry(5), leaf.slot(64.0, 2.0, PoorKind::size));     // σ 1, size only
+    const std::vector<std::uint32_t> taken = drain_window(leaf, 4);     // the window: σ 1 .. 4
     // Edge bins first, by edge_bin(l²) whatever the level (1 and 2 share
     // it: first in, first out across the levels), then the size bins
     // lowest level first; σ 7 lies beyond the window.
     CHECK(taken == std::vector<std::uint32_t>{1, 2, 0, 5, 4});
     CHECK(leaf.lowest_level() == 7);
     Leaf flat = Leaf::flat();
-    flat.push_poor(entry(0), flat.slot(1.0, 4.0, true));
+    flat.push_poor(entry(0), flat.slot(1.0, 4.0, PoorKind::angle));
     PoorSlot at;
     CHECK_FALSE(flat.first_slot(-1, at));
     CHECK(flat.first_slot(Leaf::bucket_count, at));
+}
+
+TEST_CASE("size-only triangles in edge order share the edge bins' order", "[refine][order]") {
+    // A flat leaf files them in the edge bins: one first-in-first-out order
+    // with the triangles poor by their angle.
+    Leaf flat = Leaf::flat();
+    flat.push_poor(entry(0), flat.slot(1.0, 1.0, PoorKind::size_edges));
+    flat.push_poor(entry(1), flat.slot(1.0, 1.1, PoorKind::angle));
+    flat.push_poor(entry(2), flat.slot(1.0, 0.01, PoorKind::size_edges));
+    flat.push_poor(entry(3), flat.slot(1.0, 4.0, PoorKind::angle));
+    CHECK(drain(flat) == std::vector<std::uint32_t>{2, 0, 1, 3});
+
+    // A quadtree leaf files them in size edge bins of their own, taken in
+    // the same order as the edge bins, but only up to last_size_level.
+    Leaf leaf(16.0);
+    leaf.push_poor(entry(0), leaf.slot(64.0, 1.0, PoorKind::size_edges));  // σ 1, l² 1
+    leaf.push_poor(entry(1), leaf.slot(4.0, 1.0, PoorKind::angle));        // σ 3, l² 1
+    leaf.push_poor(entry(2), leaf.slot(64.0, 16.0, PoorKind::angle));      // σ 1, l² 16
+    leaf.push_poor(entry(3), leaf.slot(4.0, 0.5, PoorKind::size_edges));   // σ 3, l² 0.5
+    leaf.push_poor(entry(4), leaf.slot(64.0, 1.2, PoorKind::angle));       // σ 1, l² 1.2
+    PoorSlot at;
+    REQUIRE(leaf.first_slot(4, at, 2));
+    CHECK(at.bin > Leaf::size_bin);
+    // l² 1 and 1.2 share a bin (first in, first out across both kinds and
+    // levels); entry 3's shorter edge waits beyond the size levels.
+    CHECK(drain_window(leaf, 4, 2) == std::vector<std::uint32_t>{0, 1, 4, 2});
+    CHECK(leaf.lowest_level() == 3);
+    CHECK(drain_window(leaf, 4, 4) == std::vector<std::uint32_t>{3});
+    CHECK(leaf.idle());
+}
+
+TEST_CASE("a split keeps the order of edge bins and size edge bins together", "[refine][order]") {
+    Family f;
+    Leaf &parent = f.parent, &c0 = f.children[0];
+    // All in child 0's square, σ 2 in the parent (r = 1.5), 1 in the child.
+    const double length[4] = {0.5, 0.01, 0.01, 0.5};
+    for (std::uint32_t i = 0; i < 4; ++i) {
+        QueuedTriangle q = entry(i);
+        q.where = parent.where({1.0 + 0.1 * i, 1.0});
+        parent.push_poor(
+            q, parent.slot(2.25, length[i], i % 2 ? PoorKind::size_edges : PoorKind::angle));
+    }
+    parent.move_poor_to_children(f.child_pointers, [](QueuedTriangle) {});
+    CHECK(parent.poor_entries() == 0);
+    CHECK(c0.poor_entries() == 4);
+    CHECK(drain(c0) == std::vector<std::uint32_t>{1, 2, 0, 3});
 }
 
 }  // namespace gpdr::refine

@@ -126,3 +126,21 @@ TEST_CASE("above 33 degrees every thread count writes one thread's mesh", "[cli]
         }
     }
 }
+
+TEST_CASE("with -V, gpdr says which refiner an angle bound gets", "[cli][determinism]") {
+    // Up to 33 degrees the quadtree's rounds (whose -V report names the
+    // rounds), above it the sequential refiner, whatever -j says.
+    const fs::path input = source_dir() / "poly-samples" / "flow.poly";
+    const std::string one_thread = "Refinement on one thread, in Triangle's order";
+    for (const char* angle : {"30", "33", "33.01", "34"}) {
+        INFO("-q" << angle);
+        TempDir dir;
+        fs::copy_file(input, dir / "flow.poly");
+        const RunResult result = run_gpdr(dir, std::string("-pVq") + angle + "a0.01 -j2 flow.poly");
+        INFO(result.err);
+        REQUIRE(result.status == 0);
+        const bool sequential = std::stod(angle) > 33.0;
+        CHECK((result.out.find(one_thread) != std::string::npos) == sequential);
+        CHECK((result.out.find("rounds refining") != std::string::npos) == !sequential);
+    }
+}

@@ -240,23 +240,9 @@ public:
             if (occupied_[w] != 0) return static_cast<int>(64 * w) + std::countr_zero(occupied_[w]);
         return -1;
     }
-    // Takes from level j the first entry of its lowest non-empty bin (the
-    // newest of the size bin; of the edge bins and size edge bins, the
-    // head first_slot would take), and says where it was in *at.
-    bool pop_poor(int j, QueuedTriangle& q, PoorSlot* at = nullptr) {
-        if (j < 0 || static_cast<std::size_t>(j) >= levels_.size()) return false;
-        const Level* l = levels_[static_cast<std::size_t>(j)].get();
-        if (!l || l->entries == 0) return false;
-        PoorSlot from{j, l->lowest_bin};
-        if (has_size_edges_ &&
-            size_edge_heads_[static_cast<std::size_t>(j)] < heads_[static_cast<std::size_t>(j)])
-            from.bin = size_edges_base + l->lowest_size_edge;
-        pop_at(from, q);
-        if (at != nullptr) *at = from;
-        return true;
-    }
-    // Takes the first entry of the slot `at` that first_slot gave.
-    void pop_at(PoorSlot at, QueuedTriangle& q) {
+    // Takes the first entry of the slot `at` that first_slot gave (the
+    // newest of a size bin, the oldest of any other).
+    void pop_poor(PoorSlot at, QueuedTriangle& q) {
         Level& l = *levels_[static_cast<std::size_t>(at.level)];
         Bin& b = l.bin(at.bin);
         if (at.bin == size_bin) {

@@ -297,7 +297,7 @@ bool LeafRefiner::refine_levels(Leaf& leaf, int last_level, int last_size_level,
             --*takes_left;
         }
         QueuedTriangle q;
-        leaf.pop_at(at, q);
+        leaf.pop_poor(at, q);
         const mesh::Triangle& r = mesh_.triangle(q.id);
         if (r.load_generation() != q.generation || !r.live())
             continue;  // stale (generation first: see Triangle)

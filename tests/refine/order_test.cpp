@@ -17,13 +17,19 @@ namespace {
 
 QueuedTriangle entry(std::uint32_t i) { return {mesh::TriangleId{i}, i, 0}; }
 
+// Takes the first entry of the lowest level (first_slot over that level
+// alone); false when the leaf is empty.
+bool pop_lowest(Leaf& leaf, QueuedTriangle& q) {
+    PoorSlot at;
+    if (!leaf.first_slot(leaf.lowest_level(), at)) return false;
+    leaf.pop_poor(at, q);
+    return true;
+}
+
+// Everything the leaf holds, level by level.
 std::vector<std::uint32_t> drain(Leaf& leaf) {
     std::vector<std::uint32_t> out;
-    for (int j = leaf.lowest_level(); j >= 0; j = leaf.lowest_level()) {
-        QueuedTriangle q{};
-        REQUIRE(leaf.pop_poor(j, q));
-        out.push_back(q.generation);
-    }
+    for (QueuedTriangle q{}; pop_lowest(leaf, q);) out.push_back(q.generation);
     return out;
 }
 
@@ -47,7 +53,7 @@ std::vector<std::uint32_t> drain_window(Leaf& leaf, int last_level,
     std::vector<std::uint32_t> out;
     for (PoorSlot at; leaf.first_slot(last_level, at, last_size_level);) {
         QueuedTriangle q{};
-        leaf.pop_at(at, q);
+        leaf.pop_poor(at, q);
         out.push_back(q.generation);
     }
     return out;
@@ -107,7 +113,7 @@ TEST_CASE("a flat leaf takes the bins in order however the pushes interleave", "
             continue;
         }
         QueuedTriangle q{};
-        REQUIRE(leaf.pop_poor(leaf.lowest_level(), q));
+        REQUIRE(pop_lowest(leaf, q));
         const int bin = Leaf::edge_bin(length[q.generation]);
         // Between pushes the bins only go up; within a bin, always in
         // arrival order.

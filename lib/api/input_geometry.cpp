@@ -39,6 +39,8 @@ mesh::InputGeometry input_geometry(const Options& options, const Input& in) {
             }
             i = j;
         }
+        if (in.areas)
+            g.area_field.emplace(g.points, ele.corners, ele.corners_per_triangle, *in.areas);
         // These are numbered after the .poly's own segments in messages.
         if (in.poly) {
             std::vector<std::uint32_t> boundary = std::move(g.segments);

@@ -107,6 +107,7 @@ std::vector<std::string> check(const Options& options, int base,
         against.min_angle = options.quality ? options.min_angle : 0;
         against.max_area = options.area_limit ? options.max_area : 0;
         against.regional_area = options.regional_area && !options.refine;
+        against.area_field = true;  // when the input had an .area file
         against.exempt = m.refined.given_up_triangles;
         if (m.user_test)
             against.unsuitable = [&](mesh::TriangleId t) {
@@ -144,7 +145,7 @@ Meshed make_mesh(const Options& options, api::Input& input, const WarningSink& w
     if (m.refining) {
         refine::RefineSettings settings =
             api::refine_settings(options, plugins, input.poly ? &*input.poly : nullptr);
-        settings.criteria.triangle_max_area = tri.area_bounds.get();
+        settings.criteria.area_field = tri.area_field.get();
         m.user_test = settings.criteria.user_test;
         settings.criteria.diametral_circles = options.conforming_delaunay;
         settings.segment_ends = tri.segment_ends;

@@ -20,9 +20,9 @@
 #include <gpdr/io.hpp>
 
 #include "api/mesh_arrays.hpp"
+#include "geometry/area_field.hpp"
 #include "mesh/input_check.hpp"
 #include "mesh/mesh.hpp"
-#include "refine/area_bounds.hpp"
 #include "refine/refine.hpp"
 #include "triangulate/pslg.hpp"
 
@@ -63,8 +63,8 @@ struct Triangulated {
     // triangle_attribute_count values per region, region 0 first.
     std::uint32_t triangle_attribute_count = 0;
     std::vector<double> region_attributes;
-    // -ra: per-triangle area bounds from the .area file.
-    std::unique_ptr<refine::AreaBounds> area_bounds;
+    // -ra: the .area file's bounds as a field over the triangles read.
+    std::unique_ptr<geometry::AreaField> area_field;
     // -p: the PSLG and what the CDT reported, for -C's conformity check.
     std::optional<triangulate::Pslg> pslg;
     triangulate::CdtReport cdt_report;

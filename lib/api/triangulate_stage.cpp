@@ -166,6 +166,11 @@ void triangulate_pslg(const Options& options, Input& in, Triangulated& out,
 void rebuild_mesh(const Options& options, Input& in, Triangulated& out) {
     const EleSet& ele = *in.triangles;
     const std::vector<geometry::Point> points = take_points(in.nodes.data);
+    // The .area file's bounds belong to the triangles as read, before the
+    // flips below make the mesh Delaunay.
+    if (in.areas)
+        out.area_field = std::make_unique<geometry::AreaField>(points, ele.corners,
+                                                               ele.corners_per_triangle, *in.areas);
     triangulate::TriangleMeshInput input;
     input.points = points;
     input.corners = ele.corners;
@@ -205,11 +210,6 @@ void rebuild_mesh(const Options& options, Input& in, Triangulated& out) {
             }
             out.mesh.triangle(mesh::TriangleId{static_cast<std::uint32_t>(t)}).region = it->second;
         }
-    }
-    if (in.areas) {
-        out.area_bounds = std::make_unique<refine::AreaBounds>();
-        for (std::size_t t = 0; t < in.areas->size(); ++t)
-            out.area_bounds->set(mesh::TriangleId{static_cast<std::uint32_t>(t)}, (*in.areas)[t]);
     }
     if (in.poly) {
         out.segment_ends.reserve(in.poly->segments.endpoints.size());

@@ -619,6 +619,7 @@ private:
         const bool regional = options_.regional_area &&
                               std::any_of(input_.regions.begin(), input_.regions.end(),
                                           [](const InputRegion& r) { return r.max_area > 0; });
+        const bool field = options_.area_field && input_.area_field.has_value();
         const bool faces = options_.region_attributes || regional;
         if (faces) find_faces();
         const double sine = std::sin(options_.min_angle * std::numbers::pi / 180);
@@ -656,7 +657,7 @@ private:
             if (options_.unsuitable && !exempt(id) && options_.unsuitable(id))
                 problems_.add("the triangle {} {} {} is one triunsuitable() asks to refine", at(a),
                               at(b), at(c));
-            if (options_.min_angle <= 0 && options_.max_area <= 0 && !regional) continue;
+            if (options_.min_angle <= 0 && options_.max_area <= 0 && !regional && !field) continue;
             const double twice_area = geometry::orient2d(a, b, c);
             const double area = 0.5 * twice_area;
             const auto too_big = [&](double bound) {
@@ -670,6 +671,15 @@ private:
                 problems_.add("the triangle {} {} {} has area {}, above region {}'s bound {}",
                               at(a), at(b), at(c), area, region + options_.base,
                               input_.regions[region].max_area);
+            if (field) {
+                const geometry::AreaField::Bound held =
+                    input_.area_field->at(geometry::centroid(a, b, c));
+                if (too_big(held.area))
+                    problems_.add(
+                        "the triangle {} {} {} has area {}, above the bound {} of input "
+                        "triangle {}, which holds its centroid",
+                        at(a), at(b), at(c), area, held.area, held.triangle + options_.base);
+            }
             if (options_.min_angle <= 0) continue;
             // The smallest angle is opposite the shortest edge; its sine is
             // twice the area over the product of the other two edges.

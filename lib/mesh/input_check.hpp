@@ -36,14 +36,13 @@
 //              segment (the last region point that reaches them, as in
 //              Triangle) carry its attribute, the others 0 (-A);
 //   bounds     no triangle has an angle below the bound, or an area above
-//              the global or its region's bound, except those refinement
-//              reports it gave up (`exempt`) and those whose shortest edge
-//              joins two segments that meet at an end of both at 60 degrees
-//              or less (the small angle is the input's); and, with -u, none
-//              that the user's triunsuitable() asks to refine.  The per-triangle
-//              bounds of an .area file (-ra) are not checked: they pass from
-//              a triangle to those that replace it, which no geometry of the
-//              input decides.
+//              the global bound, its region's, or the .area file's field at
+//              its centroid (-ra: the bound of the input triangle that
+//              holds the centroid, geometry/area_field.hpp), except those
+//              refinement reports it gave up (`exempt`) and those whose
+//              shortest edge joins two segments that meet at an end of both
+//              at 60 degrees or less (the small angle is the input's); and,
+//              with -u, none that the user's triunsuitable() asks to refine.
 //
 // Zero-length and duplicate segments, and the parts of segments in holes
 // or outside the domain, are not problems.  Segments are found near
@@ -59,10 +58,12 @@
 // line saying how many more.
 
 #include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "geometry/area_field.hpp"
 #include "geometry/point.hpp"
 #include "mesh/mesh.hpp"
 
@@ -84,6 +85,8 @@ struct InputGeometry {
     // Which input vertices the mesh must keep when they lie in the domain
     // (empty: all; -r: the corners of the triangles read).
     std::vector<bool> vertex_required;
+    // -r with an .area file: its bounds over the triangles read.
+    std::optional<geometry::AreaField> area_field;
 };
 
 struct InputCheckOptions {
@@ -91,6 +94,7 @@ struct InputCheckOptions {
     double min_angle = 0;            // degrees; 0: no angle bound
     double max_area = 0;             // the global area bound; <= 0: none
     bool regional_area = false;      // the regions' area bounds apply
+    bool area_field = false;         // the .area field's bounds apply (-ra)
     bool region_attributes = false;  // -A: check each triangle's attribute
     // -A: the attribute of each value of Triangle::region.
     std::span<const double> attribute_of_region;

@@ -6,27 +6,30 @@
 #include <cmath>
 #include <limits>
 
+#include "geometry/area_field.hpp"
 #include "geometry/constructions.hpp"
 #include "mesh/traverse.hpp"
-#include "refine/area_bounds.hpp"
 
 namespace gpdr::refine {
 
-double area_bound(const QualityCriteria& c, mesh::TriangleId id, const mesh::Triangle& t) {
+double area_bound(const QualityCriteria& c, const mesh::Mesh& mesh, const mesh::Triangle& t) {
     double bound = std::numeric_limits<double>::infinity();
     if (c.max_area > 0) bound = c.max_area;
     if (t.region < c.region_max_area.size() && c.region_max_area[t.region] > 0)
         bound = std::min(bound, c.region_max_area[t.region]);
-    if (c.triangle_max_area != nullptr && c.triangle_max_area->get(id) > 0)
-        bound = std::min(bound, c.triangle_max_area->get(id));
+    if (c.area_field != nullptr)
+        bound = std::min(bound, c.area_field
+                                    ->at(geometry::centroid(mesh.point(t.v[0]), mesh.point(t.v[1]),
+                                                            mesh.point(t.v[2])))
+                                    .area);
     return bound;
 }
 
 AreaDemand area_demand(const mesh::Mesh& mesh, const QualityCriteria& criteria) {
     AreaDemand d;
-    mesh::for_each_triangle(mesh, [&](mesh::TriangleId id, const mesh::Triangle& t) {
+    mesh::for_each_triangle(mesh, [&](mesh::TriangleId, const mesh::Triangle& t) {
         ++d.triangles;
-        const double bound = area_bound(criteria, id, t);
+        const double bound = area_bound(criteria, mesh, t);
         if (!std::isfinite(bound)) {
             d.estimate += 1;
             return;

@@ -21,9 +21,10 @@
 
 namespace gpdr::refine {
 
-// The area bound of triangle `id`: the least of the global bound (-a), its
-// region's and its own (-ra); +infinity when none applies.
-double area_bound(const QualityCriteria& criteria, mesh::TriangleId id, const mesh::Triangle& t);
+// The area bound of triangle t of `mesh`: the least of the global bound
+// (-a), its region's and the .area field's at its centroid (-ra); +infinity
+// when none applies.
+double area_bound(const QualityCriteria& criteria, const mesh::Mesh& mesh, const mesh::Triangle& t);
 
 struct AreaDemand {
     static constexpr double fill = 1.5;

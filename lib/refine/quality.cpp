@@ -38,7 +38,7 @@ QualityTest::QualityTest(const QualityCriteria& criteria, SegmentEnds segments)
                             : 1.0;
     bool regional = false;
     for (double a : criteria_.region_max_area) regional = regional || a > 0;
-    area_test_ = criteria_.max_area > 0 || regional || criteria_.triangle_max_area != nullptr;
+    area_test_ = criteria_.max_area > 0 || regional || criteria_.area_field != nullptr;
 }
 
 TriangleMeasures QualityTest::measure(const Point& a, const Point& b, const Point& c) {
@@ -110,9 +110,10 @@ Poorness QualityTest::assess(const mesh::Mesh& mesh, mesh::TriangleId t, const T
             const double bound = criteria_.region_max_area[r.region];
             if (bound > 0 && m.area > bound) return Poorness::too_big;
         }
-        if (criteria_.triangle_max_area != nullptr) {
-            const double bound = criteria_.triangle_max_area->get(t);
-            if (bound > 0 && m.area > bound) return Poorness::too_big;
+        if (criteria_.area_field != nullptr) {
+            const Point centre =
+                geometry::centroid(mesh.point(r.v[0]), mesh.point(r.v[1]), mesh.point(r.v[2]));
+            if (m.area > criteria_.area_field->at(centre).area) return Poorness::too_big;
         }
     }
     if (criteria_.user_test != nullptr) {

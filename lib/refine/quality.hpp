@@ -6,7 +6,7 @@
 // after the area checks, and the angle test last):
 //   1. global area bound      area > max_area                      (-a<A>)
 //   2. regional area bound    area > region_max_area[t.region]     (-a with .poly regions)
-//   3. per-triangle bound     area > bound of the triangle          (-ra with an .area file)
+//   3. .area field            area > the field at its centroid      (-ra with an .area file)
 //   4. user test              triunsuitable(org, dest, apex, area) != 0   (-u)
 //   5. angle bound            r / l > rho_bar = 1 / (2 sin theta), compared as squares
 //                             (r circumradius, l shortest edge), unless a small input
@@ -22,9 +22,9 @@
 #include <functional>
 #include <vector>
 
+#include "geometry/area_field.hpp"
 #include "geometry/constructions.hpp"
 #include "mesh/mesh.hpp"
-#include "refine/area_bounds.hpp"
 #include "refine/segments.hpp"
 
 namespace gpdr::refine {
@@ -49,9 +49,10 @@ struct QualityCriteria {
     // i + 1 and leaves 0 for "no region"); an entry <= 0 or an index past
     // the end: no bound.
     std::vector<double> region_max_area;
-    // -ra: per-triangle bounds (not owned; refinement keeps it up to date,
-    // see area_bounds.hpp for how new triangles inherit).  nullptr: none.
-    AreaBounds* triangle_max_area = nullptr;
+    // -ra: the bounds of an .area file as a field over the plane, each
+    // triangle held to it at its centroid (geometry/area_field.hpp).  Not
+    // owned; nullptr: none.
+    const geometry::AreaField* area_field = nullptr;
     UserTest user_test = nullptr;  // -u
     // Encroachment by diametral circles instead of lenses (-D: every
     // subsegment must end up Delaunay).

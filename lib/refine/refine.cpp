@@ -110,7 +110,7 @@ RefineRun::RefineRun(const mesh::Mesh& mesh, const RefineSettings& settings)
     std::uint64_t triangles = 0;
     double expected = 0;  // triangles the area bounds alone call for
     const QualityCriteria& c = settings_.criteria;
-    mesh::for_each_triangle(mesh, [&](TriangleId id, const mesh::Triangle& t) {
+    mesh::for_each_triangle(mesh, [&](TriangleId, const mesh::Triangle& t) {
         ++triangles;
         for (VertexId v : t.v) {
             const Point& p = mesh.point(v);
@@ -119,7 +119,7 @@ RefineRun::RefineRun(const mesh::Mesh& mesh, const RefineSettings& settings)
             min_y = std::min(min_y, p.y);
             max_y = std::max(max_y, p.y);
         }
-        const double bound = area_bound(c, id, t);
+        const double bound = area_bound(c, mesh, t);
         if (std::isfinite(bound))
             expected +=
                 geometry::signed_area(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2])) /
@@ -340,12 +340,6 @@ bool LeafRefiner::split_subsegment(Leaf& leaf, EdgeRef e) {
         leaf.handed_off_subsegments.push_back({e, mesh_.triangle(e.triangle()).generation, true});
         return false;
     }
-    AreaBounds* bounds = settings_.criteria.triangle_max_area;
-    const EdgeRef across = mesh_.neighbour(e);
-    const double left_bound = bounds ? bounds->get(e.triangle()) : 0.0;
-    const double right_bound =
-        bounds && !across.is_none() ? bounds->get(across.triangle()) : left_bound;
-
     mesh::InsertResult result;
     try {
         result = mesh::split_subsegment(pool_, e, p, mesh::VertexKind::segment, buffer_);
@@ -360,16 +354,6 @@ bool LeafRefiner::split_subsegment(Leaf& leaf, EdgeRef e) {
         mesh::interpolate_on_segment(
             mesh_, result.vertex, a, b,
             ((pv.x - pa.x) * (pb.x - pa.x) + (pv.y - pa.y) * (pb.y - pa.y)) / length_squared);
-    if (bounds) {
-        // e's triangle is on the left of a -> b; each new triangle takes the
-        // bound of the old one on its side.
-        for (TriangleId id : buffer_.created) {
-            const mesh::Triangle& t = mesh_.triangle(id);
-            const VertexId off = (t.v[0] != a && t.v[0] != b) ? t.v[0] : t.v[1];
-            bounds->set(
-                id, geometry::orient2d(pa, pb, mesh_.point(off)) > 0 ? left_bound : right_bound);
-        }
-    }
     classify_created(leaf);
     return true;
 }
@@ -486,13 +470,11 @@ double LeafRefiner::survey_cavity(const Point& p, const mesh::LocateResult& wher
 }
 
 // Fills the surveyed cavity with p (commit_cavity, without a second
-// search), carrying the host triangle's area bound to the new triangles.
+// search).
 void LeafRefiner::insert_steiner_point(Leaf& leaf, const Point& p,
                                        const mesh::LocateResult& where) {
     const mesh::Triangle& host = mesh_.triangle(where.triangle);
     const VertexId host_corners[3] = {host.v[0], host.v[1], host.v[2]};
-    AreaBounds* bounds = settings_.criteria.triangle_max_area;
-    const double bound = bounds ? bounds->get(where.triangle) : 0.0;
 
     const VertexId v = pool_.new_vertex(p, mesh::VertexKind::free);
     const mesh::InsertResult result = mesh::commit_cavity(pool_, v, where, buffer_);
@@ -502,8 +484,6 @@ void LeafRefiner::insert_steiner_point(Leaf& leaf, const Point& p,
     count_steiner_point();
     ++report_.steiner_points;
     mesh::interpolate_in_triangle(mesh_, v, host_corners);
-    if (bounds)
-        for (TriangleId id : buffer_.created) bounds->set(id, bound);
     classify_created(leaf);
 }
 

@@ -147,6 +147,42 @@ static void refine_previous_mesh(void) {
     capi_free_output(&out);
 }
 
+/* The square (0,0)-(4,4) as four triangles around (2,2), the bottom one
+   bounded by trianglearealist: the bound belongs to where that triangle
+   lies (docs/file-formats.md, ".area"), so the triangles whose centroid is
+   there meet it and the other three input triangles stay coarse. */
+static void area_list_as_a_field(void) {
+    static double points[] = {0, 0, 4, 0, 4, 4, 0, 4, 2, 2};
+    static int corners[] = {1, 2, 5, 2, 3, 5, 3, 4, 5, 4, 1, 5};
+    static double areas[] = {0.01, -1, -1, -1};
+    struct triangulateio in = capi_empty(), out = capi_empty();
+    in.pointlist = points;
+    in.numberofpoints = 5;
+    in.trianglelist = corners;
+    in.numberoftriangles = 4;
+    in.numberofcorners = 3;
+    in.trianglearealist = areas;
+    CHECK(triangulate("raQ", &in, &out, NULL) == 0);
+    CHECK(capi_valid_triangles(&out, 1));
+    CHECK(fabs(capi_total_area(&out, 1) - 16) < 1e-9);
+    int bottom = 0;
+    for (int t = 0; t < out.numberoftriangles; ++t) {
+        double x = 0, y = 0;
+        for (int k = 0; k < 3; ++k) {
+            const int v = out.trianglelist[3 * t + k] - 1;
+            x += out.pointlist[2 * v] / 3;
+            y += out.pointlist[2 * v + 1] / 3;
+        }
+        if (y <= x && y <= 4 - x) {
+            ++bottom;
+            CHECK(capi_area2(&out, t, 1) / 2 <= 0.01 * (1 + 1e-12));
+        }
+    }
+    CHECK(bottom >= 400);
+    CHECK(4 * (out.numberoftriangles - bottom) <= out.numberoftriangles);
+    capi_free_output(&out);
+}
+
 static void second_order(void) {
     struct triangulateio in = capi_square_points(), out = capi_empty();
     CHECK(triangulate("o2Q", &in, &out, NULL) == 0);
@@ -382,6 +418,7 @@ int main(void) {
     quality_pslg_with_hole();
     edges_neighbours_voronoi();
     refine_previous_mesh();
+    area_list_as_a_field();
     second_order();
     regional_attributes_and_areas();
     vertex_attributes();

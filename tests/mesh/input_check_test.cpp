@@ -139,6 +139,28 @@ TEST_CASE("the input check finds what is wrong", "[mesh][input_check]") {
         o.regional_area = true;
         CHECK(mentions(check_against_input(mesh, g, o), "above region 1's bound 0.2"));
     }
+    SECTION("an area above the .area file's bound at its centroid") {
+        // The .ele read: the square's lower-left half (input triangle 1,
+        // bound 0.15) and its upper-right half (input triangle 2, no bound).
+        // The mesh's triangles at the bottom (area 0.2) and on the left
+        // (0.25) have their centroids in the first; the other two, in the
+        // second, are as large but free.
+        const std::vector<std::uint32_t> corners{0, 1, 3, 1, 2, 3};
+        g.area_field.emplace(square_points, corners, 3, std::vector<double>{0.15, -1});
+        CHECK(all(check_against_input(mesh, g, o)).empty());  // not asked for
+        o.area_field = true;
+        const auto p = check_against_input(mesh, g, o);
+        CHECK(p.size() == 2);
+        CHECK(mentions(p,
+                       "the triangle (0, 0) (1, 0) (0.5, 0.4) has area 0.2, above the bound "
+                       "0.15 of input triangle 1, which holds its centroid"));
+        CHECK(mentions(p, "has area 0.25, above the bound 0.15 of input triangle 1"));
+        g.area_field.emplace(square_points, corners, 3, std::vector<double>{0.25, -1});
+        CHECK(all(check_against_input(mesh, g, o)).empty());
+        g.area_field.emplace(square_points, corners, 3, std::vector<double>{0.25, 0.29});
+        CHECK(mentions(check_against_input(mesh, g, o),
+                       "has area 0.3, above the bound 0.29 of input triangle 2"));
+    }
     SECTION("a triangle the user's triunsuitable() rejects, unless given up") {
         // The test rejects the triangle whose corners include (1, 1).
         o.unsuitable = [&](TriangleId t) {

@@ -1,4 +1,4 @@
-// Criteria beyond the global bounds (regional and per-triangle area bounds,
+// Criteria beyond the global bounds (regional area bounds, the .area field,
 // the user test) and the limits: -Y, -YY, -S, and the safety budget that
 // stops an angle bound refinement cannot meet.
 
@@ -52,29 +52,48 @@ TEST_CASE("regional area bounds follow the regions", "[refine][criteria]") {
     CHECK(left > 5 * right);
 }
 
-TEST_CASE("per-triangle area bounds are inherited by new triangles", "[refine][criteria]") {
+TEST_CASE("the .area field holds every triangle to the bound at its centroid",
+          "[refine][criteria]") {
     mesh::Mesh m = point_set_mesh(random_points(50, 21));
-    AreaBounds bounds;
-    mesh::for_each_triangle(m, [&](mesh::TriangleId id, const mesh::Triangle& t) {
-        bounds.set(id, centroid(m, t).x < 0.5 ? 0.0005 : 0.01);
+    // The starting triangles as an .ele would list them, a small bound on
+    // those left of x = 0.5 and a larger one on the others.
+    std::vector<Point> points;
+    for (std::uint32_t v = 0; v < m.vertex_end(); ++v) points.push_back(m.point(mesh::VertexId{v}));
+    std::vector<std::uint32_t> corners;
+    std::vector<double> bounds;
+    mesh::for_each_triangle(m, [&](mesh::TriangleId, const mesh::Triangle& t) {
+        for (auto v : t.v) corners.push_back(mesh::index(v));
+        bounds.push_back(centroid(m, t).x < 0.5 ? 0.0005 : 0.01);
     });
+    const geometry::AreaField field(points, corners, 3, bounds);
     RefineSettings settings;
     settings.criteria.min_angle_degrees = 20;
-    settings.criteria.triangle_max_area = &bounds;
+    settings.criteria.area_field = &field;
     RefineReport report;
     refine_mesh(m, settings, report);
     examine(m, settings);
-    std::size_t small_left = 0, left = 0;
-    mesh::for_each_triangle(m, [&](mesh::TriangleId id, const mesh::Triangle& t) {
-        const double bound = bounds.get(id);
+    // Every triangle meets the bound at its centroid, and those under the
+    // small bound tile about the area it was written for.
+    double small_area = 0;
+    std::size_t small = 0;
+    mesh::for_each_triangle(m, [&](mesh::TriangleId, const mesh::Triangle& t) {
+        const Point c = geometry::centroid(m.point(t.v[0]), m.point(t.v[1]), m.point(t.v[2]));
+        const double bound = field.at(c).area;
         REQUIRE((bound == 0.0005 || bound == 0.01));
         CHECK(area_of(m, t) <= bound);
-        if (centroid(m, t).x < 0.4) {
-            ++left;
-            small_left += area_of(m, t) <= 0.0005 ? 1 : 0;
+        if (bound == 0.0005) {
+            ++small;
+            small_area += area_of(m, t);
         }
     });
-    CHECK(small_left * 10 >= left * 9);  // inheritance keeps the bounds where they were
+    double written = 0;  // the area of the starting triangles bounded by 0.0005
+    for (std::size_t t = 0; t < bounds.size(); ++t)
+        if (bounds[t] == 0.0005)
+            written += geometry::signed_area(points[corners[3 * t]], points[corners[3 * t + 1]],
+                                             points[corners[3 * t + 2]]);
+    CHECK(small_area > 0.9 * written);
+    CHECK(small_area < 1.1 * written);
+    CHECK(static_cast<double>(small) >= written / 0.0005);
 }
 
 TEST_CASE("the user test is applied after the area checks", "[refine][criteria]") {

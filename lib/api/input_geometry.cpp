@@ -1,4 +1,4 @@
-// What -C compares the mesh with: the input as read (mesh/input_check.hpp),
+// What -C compares the mesh with: the input as read (check/input_check.hpp),
 // taken before the triangulation stage takes the coordinates.
 
 #include <algorithm>

@@ -20,8 +20,8 @@
 #include <gpdr/io.hpp>
 
 #include "api/mesh_arrays.hpp"
+#include "check/input_check.hpp"
 #include "geometry/area_field.hpp"
-#include "mesh/input_check.hpp"
 #include "mesh/mesh.hpp"
 #include "refine/refine.hpp"
 #include "triangulate/pslg.hpp"

@@ -11,8 +11,8 @@
 #include <gpdr/io.hpp>
 
 #include "api/api_test_support.hpp"
+#include "check/checker.hpp"
 #include "cli/cli_support.hpp"
-#include "mesh/checker.hpp"
 #include "triangulate/conformity.hpp"
 #include "triangulate/constrained.hpp"
 

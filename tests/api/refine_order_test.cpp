@@ -23,8 +23,8 @@
 #include <gpdr/io.hpp>
 
 #include "api/api_test_support.hpp"
+#include "check/checker.hpp"
 #include "cli/cli_support.hpp"
-#include "mesh/checker.hpp"
 #include "mesh/traverse.hpp"
 #include "parallel/refine_parallel.hpp"
 #include "refine/quality.hpp"

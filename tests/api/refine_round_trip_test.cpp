@@ -16,8 +16,8 @@
 
 #include <gpdr/io.hpp>
 
+#include "check/checker.hpp"
 #include "cli/cli_support.hpp"
-#include "mesh/checker.hpp"
 #include "mesh/traverse.hpp"
 #include "triangulate/constrained.hpp"
 #include "triangulate/from_triangles.hpp"

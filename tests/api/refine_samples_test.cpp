@@ -18,8 +18,8 @@
 #include <gpdr/io.hpp>
 
 #include "api/api_test_support.hpp"
+#include "check/checker.hpp"
 #include "cli/cli_support.hpp"
-#include "mesh/checker.hpp"
 #include "mesh/traverse.hpp"
 #include "refine/quality.hpp"
 #include "refine/refine.hpp"

@@ -14,8 +14,8 @@
 #include <triangle.h>
 #include <gpdr/io.hpp>
 
+#include "check/checker.hpp"
 #include "cli/cli_support.hpp"
-#include "mesh/checker.hpp"
 #include "triangulate/from_triangles.hpp"
 
 using namespace gpdr;

@@ -1,7 +1,7 @@
 // Fuzz target: a whole run (-p, -pq, -pc, -r) on a small PSLG in memory
 // (run_job_in_memory), with -C: the invariant checker (mesh::check_mesh)
-// and the segment conformity check (triangulate::check_conformity) run on
-// every mesh, and any problem they report aborts.  The input's layout is
+// and the check against the input (mesh::check_against_input) run on every
+// mesh, and any problem they report aborts.  The input's layout is
 // in pslg_bytes.hpp.  A gpdr::Error (input the library refuses, with a
 // reason) is not a finding; anything else the library throws is.
 

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "check/checker.hpp"
 #include "geometry/constructions.hpp"
-#include "mesh/checker.hpp"
 #include "mesh/traverse.hpp"
 #include "refine/refine.hpp"
 #include "refine/segments.hpp"

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh/checker.hpp"
+#include "check/checker.hpp"
 #include "mesh/traverse.hpp"
 #include "triangulate/conformity.hpp"
 #include "triangulate/constrained.hpp"

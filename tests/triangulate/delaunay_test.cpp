@@ -15,8 +15,8 @@
 
 #include <gpdr/errors.hpp>
 
+#include "check/checker.hpp"
 #include "geometry/predicates.hpp"
-#include "mesh/checker.hpp"
 #include "mesh/test_support.hpp"
 #include "mesh/traverse.hpp"
 #include "triangulate/delaunay.hpp"

@@ -17,7 +17,7 @@
 
 #include <gpdr/errors.hpp>
 
-#include "mesh/checker.hpp"
+#include "check/checker.hpp"
 #include "mesh/test_support.hpp"
 #include "mesh/traverse.hpp"
 #include "triangulate/delaunay.hpp"

@@ -2,9 +2,10 @@
 // Segment conformity: every piece of an input segment (the segments cut at
 // crossings and vertices, arrangement.hpp) is a union of subsegments of the
 // mesh (the check mesh::check_mesh cannot make, since it does not know the
-// input).  For the tests of the CDT and of refinement: it reads the
-// subsegment flags and side table, which -C's check against the input
-// (mesh/input_check.hpp) deliberately ignores.
+// input).  Only tests make it (of the CDT, and of whole runs in tests/api),
+// so it lives beside them: it reads the subsegment flags and side table,
+// which -C's check against the input (check/input_check.hpp) deliberately
+// ignores.
 //
 // Each piece a-b is walked from a: the next vertex is the far end of a
 // flagged edge out of the current vertex that lies exactly on a-b (exact

@@ -4,7 +4,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "mesh/checker.hpp"
+#include "check/checker.hpp"
 #include "mesh/flip.hpp"
 #include "mesh/split_subsegment.hpp"
 #include "mesh/test_support.hpp"

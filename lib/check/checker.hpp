@@ -1,6 +1,8 @@
 #pragma once
 // The invariant checker (docs/architecture.md: tests run it after every operation in
-// small cases; -C runs it on the result, as Triangle's -C does).
+// small cases; -C runs it on the result, as Triangle's -C does).  The check
+// layer sits just above mesh, so that the tests of every layer that makes
+// meshes can run it; it keeps the namespace of what it checks, gpdr::mesh.
 //
 // It checks, for every live triangle:
 //   topology     corners are distinct stored vertices (no ghost), neighbour

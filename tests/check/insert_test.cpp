@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <random>
 
-#include "mesh/checker.hpp"
+#include "check/checker.hpp"
 #include "mesh/insert.hpp"
 #include "mesh/test_support.hpp"
 

@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-#include "mesh/checker.hpp"
+#include "check/checker.hpp"
 #include "mesh/test_support.hpp"
 
 using namespace gpdr::mesh;

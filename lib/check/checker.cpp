@@ -1,7 +1,7 @@
 // The invariant checker (see checker.hpp for what it checks).
 
-#include "mesh/checker.hpp"
-#include "mesh/problem_list.hpp"
+#include "check/checker.hpp"
+#include "check/problem_list.hpp"
 
 #include <algorithm>
 

@@ -16,8 +16,8 @@
 //   6. the rest (boundary edges, input vertices, holes, regions, bounds)
 //      reads what 1-5 found.
 
-#include "mesh/input_check.hpp"
-#include "mesh/problem_list.hpp"
+#include "check/input_check.hpp"
+#include "check/problem_list.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -324,13 +324,25 @@ private:
 
     static constexpr std::uint32_t no_position = 0xFFFFFFFFu;
 
-    // Segment s through the vertices on_[first, last), in order along it.
+    // Segment s through the vertices on_[first, last), in order along it:
+    // the stations along it, how far the mesh edges from each reach, and
+    // the gaps no edge covers.
     void follow(std::uint32_t s, std::size_t first, std::size_t last) {
         const Segment& seg = segments_[s];
-        // The stations along s: a unless a vertex is there, the vertices
-        // between a and b, b unless a vertex is there.  A vertex within the
-        // tolerance of the line but past an end (a crossing of other
-        // segments just beyond it) is no part of s.
+        place_stations(seg, first, last);
+        for (std::uint32_t i = 0; i < stations_.size(); ++i)
+            if (stations_[i].vertex != no_position) position_[stations_[i].vertex] = i;
+        find_reach();
+        report_gaps(seg);
+        for (const Station& st : stations_)
+            if (st.vertex != no_position) position_[st.vertex] = no_position;
+    }
+
+    // The stations along seg, into stations_: a unless a vertex is there,
+    // the vertices on_[first, last) between a and b, b unless a vertex is
+    // there.  A vertex within the tolerance of the line but past an end (a
+    // crossing of other segments just beyond it) is no part of seg.
+    void place_stations(const Segment& seg, std::size_t first, std::size_t last) {
         std::vector<Station>& stations = stations_;
         stations.clear();
         stations.push_back({seg.a, no_position, true});
@@ -346,15 +358,19 @@ private:
             stations.push_back({p, compact(on_[k].vertex), exact});
         }
         if (stations.back().at != seg.b) stations.push_back({seg.b, no_position, true});
-        for (std::uint32_t i = 0; i < stations.size(); ++i)
-            if (stations[i].vertex != no_position) position_[stations[i].vertex] = i;
+    }
+
+    // reach_[i]: the farthest station a covering edge from station i leads
+    // to (i itself when none does).  An edge covers the stations it spans
+    // only when none of them lies exactly on the line: it would skip a
+    // vertex of the segment.  position_ maps the stations' vertices.
+    void find_reach() {
+        const std::vector<Station>& stations = stations_;
         // exact_before[i]: stations exactly on the line before station i.
         std::vector<std::uint32_t>& exact_before = exact_before_;
         exact_before.assign(stations.size() + 1, 0);
         for (std::size_t i = 0; i < stations.size(); ++i)
             exact_before[i + 1] = exact_before[i] + (stations[i].exact ? 1 : 0);
-        // reach[i]: the farthest station a covering edge from i or before
-        // leads to (a sweep over the covered intervals).
         std::vector<std::uint32_t>& reach = reach_;
         reach.assign(stations.size(), 0);
         for (std::uint32_t i = 0; i < stations.size(); ++i) {
@@ -368,6 +384,13 @@ private:
                 reach[i] = std::max(reach[i], j);
             }
         }
+    }
+
+    // A sweep over the covered intervals (reach_): each run of stations no
+    // edge covers must lie outside the domain, or seg is reported.
+    void report_gaps(const Segment& seg) {
+        const std::vector<Station>& stations = stations_;
+        const std::vector<std::uint32_t>& reach = reach_;
         std::uint32_t covered_to = 0;
         for (std::uint32_t i = 0; i + 1 < stations.size(); ++i) {
             if (covered_to <= i && reach[i] <= i) {
@@ -391,8 +414,6 @@ private:
             }
             covered_to = std::max(covered_to, reach[i]);
         }
-        for (const Station& st : stations)
-            if (st.vertex != no_position) position_[st.vertex] = no_position;
     }
 
     // Whether two vertices lie on one segment.
@@ -615,94 +636,128 @@ private:
                std::max(t.a.y, t.b.y) >= std::min(s.a.y, s.b.y);
     }
 
+    // What the checks of each triangle ask for, worked out once.
+    struct TriangleChecks {
+        bool regional = false;  // the regions' area bounds apply
+        bool field = false;     // the .area file's bounds apply
+        bool faces = false;     // regions are needed, found through faces
+        bool bounds = false;    // any angle or area bound applies
+        double sine2 = 0;       // the angle bound's sine squared, less rounding
+    };
+
     void check_regions_and_bounds() {
-        const bool regional = options_.regional_area &&
-                              std::any_of(input_.regions.begin(), input_.regions.end(),
-                                          [](const InputRegion& r) { return r.max_area > 0; });
-        const bool field = options_.area_field && input_.area_field.has_value();
-        const bool faces = options_.region_attributes || regional;
-        if (faces) find_faces();
+        TriangleChecks checks;
+        checks.regional = options_.regional_area &&
+                          std::any_of(input_.regions.begin(), input_.regions.end(),
+                                      [](const InputRegion& r) { return r.max_area > 0; });
+        checks.field = options_.area_field && input_.area_field.has_value();
+        checks.faces = options_.region_attributes || checks.regional;
+        checks.bounds = !(options_.min_angle <= 0 && options_.max_area <= 0 && !checks.regional &&
+                          !checks.field);
+        if (checks.faces) find_faces();
         const double sine = std::sin(options_.min_angle * std::numbers::pi / 180);
-        const double sine2 = sine * sine * (1 - 1e-9);
+        checks.sine2 = sine * sine * (1 - 1e-9);
         const std::uint32_t end = mesh_.triangle_end();
         for (std::uint32_t i = 0; i < end; ++i) {
-            const TriangleId id{i};
-            const Triangle& t = mesh_.triangle(id);
+            const Triangle& t = mesh_.triangle(TriangleId{i});
             if (!t.live() || !stored(t.v[0]) || !stored(t.v[1]) || !stored(t.v[2])) continue;
-            const Point &a = mesh_.point(t.v[0]), &b = mesh_.point(t.v[1]),
-                        &c = mesh_.point(t.v[2]);
-            std::uint32_t region = no_region;
-            if (faces) region = region_of_face_[find(i)];
-            // A sliver whose corners are within rounding of one line (an
-            // input vertex on a hull edge or segment, as its decimal
-            // coordinates meant) may be cut off as a face of its own here
-            // while the mesh spreads its neighbour's region into it: it has
-            // no area to disagree about.
-            const double longest =
-                std::max({geometry::squared_distance(a, b), geometry::squared_distance(b, c),
-                          geometry::squared_distance(c, a)});
-            const bool sliver = std::abs(geometry::orient2d(a, b, c)) <= 1e-12 * longest;
-            if (options_.region_attributes && region != ambiguous && !sliver) {
-                const double want = region == no_region ? 0.0 : input_.regions[region].attribute;
-                if (t.region >= options_.attribute_of_region.size())
-                    problems_.add("the triangle {} {} {} has no attribute", at(a), at(b), at(c));
-                else if (!(options_.attribute_of_region[t.region] == want))
-                    problems_.add("the triangle {} {} {} has attribute {} where {} says {}", at(a),
-                                  at(b), at(c), options_.attribute_of_region[t.region],
-                                  region == no_region
-                                      ? std::string("no region")
-                                      : fmt::format("region {}", region + options_.base),
-                                  want);
-            }
-            if (options_.unsuitable && !exempt(id) && options_.unsuitable(id))
-                problems_.add("the triangle {} {} {} is one triunsuitable() asks to refine", at(a),
-                              at(b), at(c));
-            if (options_.min_angle <= 0 && options_.max_area <= 0 && !regional && !field) continue;
-            const double twice_area = geometry::orient2d(a, b, c);
-            const double area = 0.5 * twice_area;
-            const auto too_big = [&](double bound) {
-                return bound > 0 && area > bound * (1 + 1e-9) && !exempt(id);
-            };
-            if (too_big(options_.max_area))
-                problems_.add("the triangle {} {} {} has area {}, above the bound {}", at(a), at(b),
-                              at(c), area, options_.max_area);
-            if (regional && region < input_.regions.size() &&
-                too_big(input_.regions[region].max_area))
-                problems_.add("the triangle {} {} {} has area {}, above region {}'s bound {}",
-                              at(a), at(b), at(c), area, region + options_.base,
-                              input_.regions[region].max_area);
-            if (field) {
-                const geometry::AreaField::Bound held =
-                    input_.area_field->at(geometry::centroid(a, b, c));
-                if (too_big(held.area))
-                    problems_.add(
-                        "the triangle {} {} {} has area {}, above the bound {} of input "
-                        "triangle {}, which holds its centroid",
-                        at(a), at(b), at(c), area, held.area, held.triangle + options_.base);
-            }
-            if (options_.min_angle <= 0) continue;
-            // The smallest angle is opposite the shortest edge; its sine is
-            // twice the area over the product of the other two edges.
-            const double ab = geometry::squared_distance(a, b),
-                         bc = geometry::squared_distance(b, c),
-                         ca = geometry::squared_distance(c, a);
-            double product;
-            VertexId u, w;
-            if (ab <= bc && ab <= ca) {
-                product = bc * ca, u = t.v[0], w = t.v[1];
-            } else if (bc <= ca) {
-                product = ab * ca, u = t.v[1], w = t.v[2];
-            } else {
-                product = ab * bc, u = t.v[2], w = t.v[0];
-            }
-            if (!(twice_area * twice_area < product * sine2)) continue;
-            if (exempt(id) || at_small_input_angle(u, w)) continue;
-            const double degrees =
-                std::asin(std::min(1.0, twice_area / std::sqrt(product))) * 180 / std::numbers::pi;
-            problems_.add(
-                "the triangle {} {} {} has an angle of {:.3g} degrees, below the bound {}", at(a),
-                at(b), at(c), degrees, options_.min_angle);
+            check_triangle(TriangleId{i}, t, checks);
         }
+    }
+
+    // One triangle: its attribute (-A), the user's test (-u), its area and
+    // its smallest angle, in that order.
+    void check_triangle(TriangleId id, const Triangle& t, const TriangleChecks& checks) {
+        const std::uint32_t region = checks.faces ? region_of_face_[find(index(id))] : no_region;
+        if (options_.region_attributes && region != ambiguous) check_attribute(t, region);
+        if (options_.unsuitable && !exempt(id) && options_.unsuitable(id))
+            problems_.add("the triangle {} is one triunsuitable() asks to refine", corners(t));
+        if (!checks.bounds) return;
+        check_area(id, t, region, checks);
+        if (options_.min_angle <= 0) return;
+        check_angle(id, t, checks.sine2);
+    }
+
+    std::string corners(const Triangle& t) const {
+        return fmt::format("{} {} {}", at(mesh_.point(t.v[0])), at(mesh_.point(t.v[1])),
+                           at(mesh_.point(t.v[2])));
+    }
+
+    // -A: the triangle carries the attribute of the region whose point
+    // reaches it, 0 where none does.
+    void check_attribute(const Triangle& t, std::uint32_t region) {
+        const Point &a = mesh_.point(t.v[0]), &b = mesh_.point(t.v[1]), &c = mesh_.point(t.v[2]);
+        // A sliver whose corners are within rounding of one line (an input
+        // vertex on a hull edge or segment, as its decimal coordinates
+        // meant) may be cut off as a face of its own here while the mesh
+        // spreads its neighbour's region into it: it has no area to
+        // disagree about.
+        const double longest =
+            std::max({geometry::squared_distance(a, b), geometry::squared_distance(b, c),
+                      geometry::squared_distance(c, a)});
+        if (std::abs(geometry::orient2d(a, b, c)) <= 1e-12 * longest) return;
+        const double want = region == no_region ? 0.0 : input_.regions[region].attribute;
+        if (t.region >= options_.attribute_of_region.size())
+            problems_.add("the triangle {} has no attribute", corners(t));
+        else if (!(options_.attribute_of_region[t.region] == want))
+            problems_.add("the triangle {} has attribute {} where {} says {}", corners(t),
+                          options_.attribute_of_region[t.region],
+                          region == no_region ? std::string("no region")
+                                              : fmt::format("region {}", region + options_.base),
+                          want);
+    }
+
+    // The global area bound, the region's and the .area file's at the
+    // triangle's centroid; not for triangles refinement gave up.
+    void check_area(TriangleId id, const Triangle& t, std::uint32_t region,
+                    const TriangleChecks& checks) {
+        const Point &a = mesh_.point(t.v[0]), &b = mesh_.point(t.v[1]), &c = mesh_.point(t.v[2]);
+        const double area = 0.5 * geometry::orient2d(a, b, c);
+        const auto too_big = [&](double bound) {
+            return bound > 0 && area > bound * (1 + 1e-9) && !exempt(id);
+        };
+        if (too_big(options_.max_area))
+            problems_.add("the triangle {} has area {}, above the bound {}", corners(t), area,
+                          options_.max_area);
+        if (checks.regional && region < input_.regions.size() &&
+            too_big(input_.regions[region].max_area))
+            problems_.add("the triangle {} has area {}, above region {}'s bound {}", corners(t),
+                          area, region + options_.base, input_.regions[region].max_area);
+        if (checks.field) {
+            const geometry::AreaField::Bound held =
+                input_.area_field->at(geometry::centroid(a, b, c));
+            if (too_big(held.area))
+                problems_.add(
+                    "the triangle {} has area {}, above the bound {} of input triangle {}, "
+                    "which holds its centroid",
+                    corners(t), area, held.area, held.triangle + options_.base);
+        }
+    }
+
+    // The angle bound, except on triangles refinement gave up and at small
+    // angles of the input's own.  sine2: the bound's sine squared.
+    void check_angle(TriangleId id, const Triangle& t, double sine2) {
+        const Point &a = mesh_.point(t.v[0]), &b = mesh_.point(t.v[1]), &c = mesh_.point(t.v[2]);
+        const double twice_area = geometry::orient2d(a, b, c);
+        // The smallest angle is opposite the shortest edge; its sine is
+        // twice the area over the product of the other two edges.
+        const double ab = geometry::squared_distance(a, b), bc = geometry::squared_distance(b, c),
+                     ca = geometry::squared_distance(c, a);
+        double product;
+        VertexId u, w;
+        if (ab <= bc && ab <= ca) {
+            product = bc * ca, u = t.v[0], w = t.v[1];
+        } else if (bc <= ca) {
+            product = ab * ca, u = t.v[1], w = t.v[2];
+        } else {
+            product = ab * bc, u = t.v[2], w = t.v[0];
+        }
+        if (!(twice_area * twice_area < product * sine2)) return;
+        if (exempt(id) || at_small_input_angle(u, w)) return;
+        const double degrees =
+            std::asin(std::min(1.0, twice_area / std::sqrt(product))) * 180 / std::numbers::pi;
+        problems_.add("the triangle {} has an angle of {:.3g} degrees, below the bound {}",
+                      corners(t), degrees, options_.min_angle);
     }
 
     const Mesh& mesh_;

@@ -5,9 +5,9 @@
 
 #include <algorithm>
 
+#include "check/input_check.hpp"
 #include "geometry/constructions.hpp"
 #include "geometry/predicates.hpp"
-#include "mesh/input_check.hpp"
 #include "mesh/test_support.hpp"
 
 using namespace gpdr::mesh;

@@ -13,8 +13,12 @@ cd "$(dirname "$0")/.."
 # clang and its runtimes (libFuzzer, the sanitizers): the shared sanitizer
 # build with the fuzz targets (scripts/asan-build.sh).  python3-meshio (with
 # python3-numpy): the test that other programs read the .vtu and .msh files.
+# pybind11-dev and python3-dev: the Python module gpdr (python/); python3-pytest
+# runs its tests; python3-venv, python3-setuptools and python3-wheel serve
+# `pip install --no-build-isolation .` (docs/python.md).
 packages=(cmake make gcc g++ libcli11-dev libfmt-dev catch2 libgmp-dev pkg-config locales clang
-  libclang-rt-14-dev python3-meshio python3-numpy)
+  libclang-rt-14-dev python3-meshio python3-numpy pybind11-dev python3-dev python3-pytest
+  python3-venv python3-setuptools python3-wheel)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

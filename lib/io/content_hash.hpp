@@ -11,6 +11,7 @@
 // zero-padded with the length mixed in, and MurmurHash3's 64-bit finaliser
 // at the end.
 
+#include <cstddef>
 #include <cstdint>
 #include <string_view>
 
@@ -22,5 +23,21 @@ inline constexpr std::uint64_t hash_seed = 0xcbf29ce484222325ull;  // FNV-1a's o
 std::uint64_t hash_bytes(std::string_view bytes, std::uint64_t h = hash_seed) noexcept;
 // Continues hash `h` over one number.
 std::uint64_t hash_number(std::uint64_t n, std::uint64_t h) noexcept;
+
+// hash_bytes() over bytes that arrive in pieces (a file read from a pipe):
+// after add(a), add(b), ..., value() is hash_bytes(a + b + ...), however
+// the bytes were cut, so a file's run stamp does not depend on whether it
+// was mapped whole or read as it came.
+class ContentHasher {
+public:
+    void add(std::string_view bytes) noexcept;
+    std::uint64_t value() const noexcept;
+
+private:
+    std::uint64_t h_ = hash_seed;
+    std::uint64_t length_ = 0;
+    unsigned char pending_[8] = {};  // the bytes of a word not yet complete
+    std::size_t pending_size_ = 0;
+};
 
 }  // namespace gpdr::io

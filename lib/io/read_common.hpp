@@ -28,17 +28,25 @@ inline void check_index_capacity(TextReader& in, std::size_t count, std::string_
 // separator; the file's last may lack its separator), so entries x
 // attributes must fit in half the bytes after the header.  Otherwise a tiny
 // file could declare a million attributes per vertex, every one of them
-// stored, interpolated and written out.
+// stored, interpolated and written out.  A regular file is checked here; a
+// stream once it has been read to its end (TextReader::require_rest), and
+// while it is read TextReader::real_or bounds the values it leaves out by
+// the bytes read so far, so that memory stays in proportion to them.
 inline std::uint32_t attribute_count(TextReader& in, std::size_t entries, std::string_view what) {
     const std::int64_t n = in.integer_or(0, what);
     if (n < 0) in.fail(fmt::format("{} {} is negative", what, n));
+    // values <= (rest + 1) / 2, rounded down, is rest >= 2 x values - 1.
     const std::uint64_t holders = std::max<std::uint64_t>(entries, 1);
-    const std::uint64_t values = (std::uint64_t{in.remaining_bytes()} + 1) / 2;
-    if (static_cast<std::uint64_t>(n) > values / holders)
-        in.fail(fmt::format(
-            "{} {} is impossible: {} entries of {} values need at least {:.0f} "
-            "bytes, and the rest of the file has {}",
-            what, n, entries, n, 2.0 * double(n) * double(holders), in.remaining_bytes()));
+    const double values = double(n) * double(holders);
+    const std::uint64_t need = n == 0             ? 0
+                               : values >= 0x1p62 ? std::numeric_limits<std::uint64_t>::max()
+                                                  : 2 * static_cast<std::uint64_t>(n) * holders - 1;
+    in.require_rest(need, [=](std::uint64_t rest) {
+        return fmt::format(
+            "{} {} is impossible: {} entries of {} values need at least {:.0f} bytes, and the "
+            "rest of the file has {}",
+            what, n, entries, n, 2.0 * values, rest);
+    });
     if (n >= std::numeric_limits<std::uint32_t>::max())
         in.fail(fmt::format("{} {} is more than gpdr's limit of {}", what, n,
                             std::numeric_limits<std::uint32_t>::max() - 1));

@@ -54,9 +54,9 @@ ReadResult<EleSet> read_ele(const std::string& path, int base, std::size_t verte
     ele.corners_per_triangle = static_cast<std::uint32_t>(corners);
     ele.attribute_count = detail::attribute_count(in, count, "triangle attribute count");
 
-    const std::size_t expect = std::min(count, in.remaining_bytes() / (2 * (corners + 1)) + 1);
+    const std::size_t expect = in.reserve_hint(count, 2 * std::size_t(corners + 1));
     ele.corners.reserve(expect * ele.corners_per_triangle);
-    ele.attributes.reserve(expect * ele.attribute_count);
+    ele.attributes.reserve(in.reserve_hint(expect * ele.attribute_count, 2));
     IdChecker ids("triangle", base);
     for (std::size_t k = 0; k < count; ++k) {
         next_entry(in, count, k, "triangles");
@@ -66,7 +66,7 @@ ReadResult<EleSet> read_ele(const std::string& path, int base, std::size_t verte
         for (std::uint32_t a = 0; a < ele.attribute_count; ++a)
             ele.attributes.push_back(in.real_or(0.0, "triangle attribute"));
     }
-    r.content_hash = in.content_hash();
+    r.content_hash = in.finish();
     return r;
 }
 
@@ -79,14 +79,14 @@ ReadResult<AreaSet> read_area(const std::string& path, int base, std::size_t tri
         in.fail(fmt::format("{} triangles, but the .ele file has {}", count, triangle_count));
     ReadResult<AreaSet> r;
     r.base = base;
-    r.data.reserve(count);
+    r.data.reserve(in.reserve_hint(count, 2));
     IdChecker ids("triangle", base);
     for (std::size_t k = 0; k < count; ++k) {
         next_entry(in, count, k, "area bounds");
         entry_id(in, ids, k, r.base, "triangle number", warn);
         r.data.push_back(in.real_or(-1.0, "maximum area"));
     }
-    r.content_hash = in.content_hash();
+    r.content_hash = in.finish();
     return r;
 }
 
@@ -98,7 +98,7 @@ ReadResult<EdgeSet> read_edge(const std::string& path, int base, std::size_t ver
     const bool markers = detail::marker_count(in, "edge marker count");
     ReadResult<EdgeSet> r;
     r.base = base;
-    const std::size_t expect = std::min(count, in.remaining_bytes() / 6 + 1);
+    const std::size_t expect = in.reserve_hint(count, 6);
     r.data.endpoints.reserve(2 * expect);
     if (markers) r.data.markers.reserve(expect);
     IdChecker ids("edge", base);
@@ -114,7 +114,7 @@ ReadResult<EdgeSet> read_edge(const std::string& path, int base, std::size_t ver
         r.data.endpoints.push_back(b);
         if (markers) r.data.markers.push_back(detail::marker(in, "edge marker"));
     }
-    r.content_hash = in.content_hash();
+    r.content_hash = in.finish();
     return r;
 }
 
@@ -129,7 +129,7 @@ ReadResult<NeighbourSet> read_neigh(const std::string& path, int base, std::size
     if (per != 3) in.fail(fmt::format("neighbours per triangle must be 3, not {}", per));
     ReadResult<NeighbourSet> r;
     r.base = base;
-    r.data.neighbours.reserve(3 * std::min(count, in.remaining_bytes() / 8 + 1));
+    r.data.neighbours.reserve(3 * in.reserve_hint(count, 8));
     IdChecker ids("triangle", base);
     for (std::size_t k = 0; k < count; ++k) {
         next_entry(in, count, k, "triangles");
@@ -142,7 +142,7 @@ ReadResult<NeighbourSet> read_neigh(const std::string& path, int base, std::size
                                                                         "neighbour", "triangles"));
         }
     }
-    r.content_hash = in.content_hash();
+    r.content_hash = in.finish();
     return r;
 }
 
@@ -154,7 +154,7 @@ ReadResult<VoronoiEdgeSet> read_voronoi_edge(const std::string& path, int base,
     detail::marker_count(in, "edge marker count");  // Triangle writes 0; markers are not read
     ReadResult<VoronoiEdgeSet> r;
     r.base = base;
-    const std::size_t expect = std::min(count, in.remaining_bytes() / 6 + 1);
+    const std::size_t expect = in.reserve_hint(count, 6);
     r.data.endpoints.reserve(2 * expect);
     r.data.directions.reserve(2 * expect);
     IdChecker ids("edge", base);
@@ -178,7 +178,7 @@ ReadResult<VoronoiEdgeSet> read_voronoi_edge(const std::string& path, int base,
             r.data.directions.push_back(0.0);
         }
     }
-    r.content_hash = in.content_hash();
+    r.content_hash = in.finish();
     return r;
 }
 

@@ -53,9 +53,9 @@ NodeSet read_vertices(TextReader& in, const NodeHeader& h, int default_base, int
                       const WarningSink& warn) {
     NodeSet nodes;
     nodes.attribute_count = h.attributes;
-    const std::size_t expect = std::min(h.count, in.remaining_bytes() / 6 + 1);
+    const std::size_t expect = in.reserve_hint(h.count, 6);
     nodes.xy.reserve(2 * expect);
-    nodes.attributes.reserve(expect * h.attributes);
+    nodes.attributes.reserve(in.reserve_hint(expect * h.attributes, 2));
     if (h.markers) nodes.markers.reserve(expect);
     base = default_base;
     IdChecker ids("vertex", base);
@@ -89,7 +89,7 @@ ReadResult<NodeSet> read_node_impl(const std::string& path, std::string_view why
     const NodeHeader h = read_node_header(in);
     ReadResult<NodeSet> r;
     r.data = read_vertices(in, h, default_base, r.base, warn);
-    r.content_hash = in.content_hash();
+    r.content_hash = in.finish();
     return r;
 }
 
@@ -135,7 +135,7 @@ ReadResult<PolyFile> read_poly(const std::string& path, const WarningSink& warn,
         in.fail("expected the segment header '<#segments> <#markers>', found the end of the file");
     const std::size_t segment_count = in.count("segment count");
     const bool segment_markers = detail::marker_count(in, "segment marker count");
-    const std::size_t expect = std::min(segment_count, in.remaining_bytes() / 6 + 1);
+    const std::size_t expect = in.reserve_hint(segment_count, 6);
     poly.segments.endpoints.reserve(2 * expect);
     if (segment_markers) poly.segments.markers.reserve(expect);
     IdChecker segment_ids("segment", r.base);
@@ -156,7 +156,7 @@ ReadResult<PolyFile> read_poly(const std::string& path, const WarningSink& warn,
     // Holes: "<#holes>", then "<i> <x> <y>".
     if (!in.next_line()) in.fail("expected the number of holes, found the end of the file");
     const std::size_t hole_count = in.count("hole count", 6);
-    poly.holes.reserve(2 * hole_count);
+    poly.holes.reserve(2 * in.reserve_hint(hole_count, 6));
     IdChecker hole_ids("hole", r.base);
     for (std::size_t k = 0; k < hole_count; ++k) {
         if (!in.next_line()) in.fail(fmt::format("expected {} holes, found {}", hole_count, k));
@@ -168,7 +168,7 @@ ReadResult<PolyFile> read_poly(const std::string& path, const WarningSink& warn,
     // Regions (optional): "<#regions>", then "<i> <x> <y> <attribute> <max area>".
     if (in.next_line()) {
         const std::size_t region_count = in.count("region count", 8);
-        poly.regions.reserve(region_count);
+        poly.regions.reserve(in.reserve_hint(region_count, 8));
         IdChecker region_ids("region", r.base);
         for (std::size_t k = 0; k < region_count; ++k) {
             if (!in.next_line())
@@ -184,7 +184,7 @@ ReadResult<PolyFile> read_poly(const std::string& path, const WarningSink& warn,
         }
         if (in.next_line()) in.warn(warn, "data after the region list is ignored");
     }
-    r.content_hash = hash_number(r.content_hash, in.content_hash());
+    r.content_hash = hash_number(r.content_hash, in.finish());
     return r;
 }
 

@@ -1,5 +1,6 @@
-// TextReader: loads a file in one read and walks its data lines and fields
-// (see text_reader.hpp for the rules it follows and where it deviates).
+// TextReader: walks the data lines and fields of a file as LineSource hands
+// its lines over (see text_reader.hpp for the rules it follows and where it
+// deviates).
 
 #include "io/text_reader.hpp"
 
@@ -13,13 +14,6 @@
 #include <system_error>
 
 #include <fmt/format.h>
-
-#include <fcntl.h>
-#include <sys/mman.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include "io/content_hash.hpp"
 
 namespace gpdr::io::detail {
 
@@ -45,23 +39,6 @@ std::string_view without_comma(std::string_view field) noexcept {
     return field;
 }
 
-InputError read_failure(const std::string& path, std::string_view why_needed, std::string reason) {
-    if (!why_needed.empty()) {
-        reason += " (";
-        reason += why_needed;
-        reason += ")";
-    }
-    return InputError(path, 0, std::move(reason));
-}
-
-// Closes a file descriptor when it goes out of scope.
-struct Descriptor {
-    int fd;
-    ~Descriptor() {
-        if (fd >= 0) ::close(fd);
-    }
-};
-
 // Parses a whole token as a finite or infinite real, the way strtod would
 // for the decimal forms.  Returns false if the token is not a number.
 bool parse_real(const char* b, const char* e, double& out) {
@@ -77,14 +54,15 @@ bool parse_real(const char* b, const char* e, double& out) {
     return ec == std::errc{};
 }
 
-// A field for a message: at most 40 bytes, control bytes (a NUL would cut
-// the message short, an escape sequence would reach the terminal) written
-// as \xHH.
+// A field for a message: at most 40 bytes, control bytes (an escape
+// sequence would reach the terminal) and bytes outside ASCII (C1 controls
+// such as 0x9b, the one-byte CSI, and the noise of a binary file, which
+// would not be text in the message) written as \xHH.
 std::string quoted(std::string_view token) {
     std::string s = "'";
     for (const char c : token.substr(0, 40)) {
         const auto byte = static_cast<unsigned char>(c);
-        if (byte < 0x20 || byte == 0x7f || c == '\\')
+        if (byte < 0x20 || byte >= 0x7f || c == '\\')
             s += fmt::format("\\x{:02x}", byte);
         else
             s += c;
@@ -96,91 +74,44 @@ std::string quoted(std::string_view token) {
 
 }  // namespace
 
-FileText::FileText(const std::string& path, std::string_view why_needed, std::size_t cap) {
-    const auto failure = [&](int err) {
-        return read_failure(path, why_needed, std::string("cannot read: ") + std::strerror(err));
-    };
-    const Descriptor file{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
-    if (file.fd < 0) throw failure(errno);
-    struct stat st {};
-    if (::fstat(file.fd, &st) != 0) throw failure(errno);
-    if (S_ISDIR(st.st_mode)) throw failure(EISDIR);
-    if (S_ISREG(st.st_mode)) {
-        if (st.st_size == 0) return;
-        const auto length = static_cast<std::size_t>(st.st_size);
-        void* map = ::mmap(nullptr, length, PROT_READ, MAP_PRIVATE, file.fd, 0);
-        if (map == MAP_FAILED) throw failure(errno);
-        ::madvise(map, length, MADV_SEQUENTIAL);
-        mapping_ = map;
-        data_ = static_cast<const char*>(map);
-        size_ = length;
-        return;
-    }
-    // Not a regular file: read what comes, growing the buffer geometrically,
-    // up to the cap.
-    std::size_t used = 0;
-    for (;;) {
-        if (used == owned_.size()) {
-            if (used >= cap)
-                throw read_failure(path, why_needed,
-                                   fmt::format("not a regular file, and longer than {} bytes: "
-                                               "not read",
-                                               cap));
-            owned_.resize(std::min(cap, std::max<std::size_t>(65536, 2 * used)));
-        }
-        const ssize_t got = ::read(file.fd, owned_.data() + used, owned_.size() - used);
-        if (got < 0) {
-            if (errno == EINTR) continue;
-            throw failure(errno);
-        }
-        if (got == 0) break;
-        used += static_cast<std::size_t>(got);
-    }
-    owned_.resize(used);
-    owned_.shrink_to_fit();
-    data_ = owned_.data();
-    size_ = owned_.size();
-}
-
-FileText::~FileText() {
-    if (mapping_ != nullptr) ::munmap(mapping_, size_);
-}
-
 TextReader::TextReader(std::string path, std::string_view why_needed)
-    : path_(std::move(path)), text_(path_, why_needed) {
-    next_ = text_.data();
-    pos_ = data_end_ = next_;
-}
+    : path_(std::move(path)), source_(path_, why_needed) {}
 
 bool TextReader::next_line() {
-    const char* const end = text_.data() + text_.size();
-    if (next_ == nullptr) return false;  // already past the end
-    while (next_ < end) {
-        const char* start = next_;
-        const auto* nl = static_cast<const char*>(std::memchr(start, '\n', end - start));
-        const char* eol = nl ? nl : end;
-        next_ = nl ? nl + 1 : end;
-        ++line_;
-        const auto* hash = static_cast<const char*>(std::memchr(start, '#', eol - start));
-        data_end_ = hash ? hash : eol;
-        pos_ = start;
+    if (at_end_) return false;
+    while (source_.next_line()) {
+        const std::string_view text = source_.text();
+        const char* const eol = text.data() + text.size();
+        const auto* hash = static_cast<const char*>(std::memchr(text.data(), '#', text.size()));
+        line_ = source_.line();
+        data_end_ = hash != nullptr ? hash : eol;
+        pos_ = text.data();
         skip_blanks();
         if (pos_ != data_end_) return true;
     }
     // The end of the file: report the line after the last one.
-    ++line_;
-    next_ = nullptr;
-    pos_ = data_end_ = end;
+    at_end_ = true;
+    line_ = source_.line() + 1;
+    pos_ = data_end_ = nullptr;
     return false;
 }
 
-std::size_t TextReader::remaining_bytes() const noexcept {
-    if (next_ == nullptr) return 0;
-    return static_cast<std::size_t>(text_.data() + text_.size() - next_);
+std::uint64_t TextReader::finish() {
+    const std::uint64_t hash = source_.finish();
+    for (const RestClaim& claim : claims_) {
+        const std::uint64_t rest = source_.bytes_read() - claim.from;
+        if (rest < claim.bytes) fail_at(claim.line, claim.reason(rest));
+    }
+    return hash;
 }
 
-std::uint64_t TextReader::content_hash() const noexcept {
-    return hash_bytes(std::string_view(text_.data(), text_.size()));
+void TextReader::require_rest(std::uint64_t bytes,
+                              std::function<std::string(std::uint64_t)> reason) {
+    if (sized()) {
+        if (remaining_bytes() < bytes) fail(reason(remaining_bytes()));
+        return;
+    }
+    claims_.push_back(RestClaim{line_, source_.offset(), bytes, std::move(reason)});
 }
 
 void TextReader::skip_blanks() noexcept {
@@ -249,7 +180,19 @@ std::int64_t TextReader::integer_or(std::int64_t fallback, std::string_view what
 }
 
 double TextReader::real_or(double fallback, std::string_view what) {
-    return has_field() ? real(what) : fallback;
+    if (has_field()) return real(what);
+    if (!sized()) count_left_out(what);
+    return fallback;
+}
+
+void TextReader::count_left_out(std::string_view what) {
+    const std::uint64_t read = source_.bytes_read();
+    if (++left_out_ > left_out_slack + read / 2)
+        fail(
+            fmt::format("{} values left out of their lines so far, the last a {}: more than "
+                        "input that is not a regular file may leave out ({} plus one for every "
+                        "two of the {} bytes read)",
+                        left_out_, what, left_out_slack, read));
 }
 
 std::size_t TextReader::count(std::string_view what, std::size_t min_bytes_per_entry) {
@@ -261,9 +204,11 @@ std::size_t TextReader::count(std::string_view what, std::size_t min_bytes_per_e
     // reserved.  A small one is reported where the entries run out
     // ("expected 4 vertices, found 3"), which says more to the user; the
     // readers never reserve more than the file can hold either way.
+    // A stream's size is not known yet: see reserve_hint().
     const std::size_t capacity = (remaining_bytes() + 1) / min_bytes_per_entry;
     constexpr std::uint64_t small = 65536;
-    if (static_cast<std::uint64_t>(n) > capacity && static_cast<std::uint64_t>(n) > small)
+    if (sized() && static_cast<std::uint64_t>(n) > capacity &&
+        static_cast<std::uint64_t>(n) > small)
         fail(std::string(what) + " " + std::to_string(n) + " is impossible: the remaining " +
              std::to_string(remaining_bytes()) +
              " bytes of the file cannot hold that many entries");

@@ -1,6 +1,7 @@
 #pragma once
-// A cursor over one of Triangle's text files, mapped (or read) into memory
-// at once.
+// A cursor over the data lines and fields of one of Triangle's text files,
+// mapped or read as it arrives (line_source.hpp: the two kinds of file, and
+// the NUL byte and line length checks every line passes).
 //
 // Follows Triangle's reading rules (readline/findfield in triangle.c, as its
 // documentation describes them): `#` starts a comment running to the end of
@@ -16,49 +17,29 @@
 // reads the way strtod reads it (underflow towards 0, overflow to infinity,
 // which is then refused), like Triangle's strtod; a leading '+' is accepted.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <optional>
+#include <functional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <gpdr/diagnostics.hpp>
 #include <gpdr/errors.hpp>
 
+#include "io/line_source.hpp"
+
 namespace gpdr::io::detail {
-
-// The bytes of one input file.  A regular file is mapped, not copied: its
-// pages come from the page cache as the reader reaches them and can be
-// dropped again behind it, so a large file costs its parsed values and not
-// a second copy of its text.  Anything else (a pipe, a device) is read into
-// memory, at most max_unsized_bytes of it: /dev/zero is an error, not a
-// machine out of memory.
-class FileText {
-public:
-    static constexpr std::size_t max_unsized_bytes = std::size_t{1} << 30;
-
-    // InputError on line 0 if the file cannot be read, or is not regular
-    // and longer than `cap`; `why_needed` is appended to the reason.
-    FileText(const std::string& path, std::string_view why_needed,
-             std::size_t cap = max_unsized_bytes);
-    ~FileText();
-    FileText(const FileText&) = delete;
-    FileText& operator=(const FileText&) = delete;
-
-    const char* data() const noexcept { return data_; }
-    std::size_t size() const noexcept { return size_; }
-
-private:
-    const char* data_ = "";
-    std::size_t size_ = 0;
-    void* mapping_ = nullptr;  // munmap'ed by the destructor
-    std::string owned_;        // the bytes of a file that is not mapped
-};
 
 class TextReader {
 public:
-    // Reads the whole file.  A missing or unreadable file is an InputError on
-    // line 0; `why_needed`, when not empty, is appended to its reason (used by
+    // Values that the lines of a stream may leave out, beyond one per two
+    // bytes read, before the file is refused (see real_or).
+    static constexpr std::uint64_t left_out_slack = std::uint64_t{1} << 20;
+
+    // Opens the file.  A missing or unreadable file is an InputError on line
+    // 0; `why_needed`, when not empty, is appended to its reason (used by
     // .poly files that take their vertices from a .node file).
     explicit TextReader(std::string path, std::string_view why_needed = {});
 
@@ -69,10 +50,31 @@ public:
     bool next_line();
     // The current line's number (1-based); after the end, last line + 1.
     std::size_t line() const noexcept { return line_; }
-    // Bytes after the current line: what the rest of the file can hold.
-    std::size_t remaining_bytes() const noexcept;
-    // A hash of the whole file's bytes (content_hash.hpp), for the run stamp.
-    std::uint64_t content_hash() const noexcept;
+
+    // Whether the file's size is known: a regular file, not a stream.
+    bool sized() const noexcept { return source_.sized(); }
+    // Bytes known to follow the current line: the rest of a regular file;
+    // of a stream, only those already read (a lower bound).
+    std::size_t remaining_bytes() const noexcept { return source_.bytes_at_hand(); }
+    // How many of `count` entries to reserve room for: no more than the
+    // known bytes could hold at `min_bytes_per_entry` bytes each, so that a
+    // count read from a stream, which count() cannot refuse up front, never
+    // reserves memory the data has not paid for; vectors grow from there.
+    std::size_t reserve_hint(std::size_t count, std::size_t min_bytes_per_entry) const noexcept {
+        return std::min(count, remaining_bytes() / min_bytes_per_entry + 1);
+    }
+
+    // Reads the rest of the file, checking its lines as next_line() does (a
+    // stream is read to its end), runs the checks that require_rest()
+    // deferred, and returns the hash of the whole file's bytes
+    // (content_hash.hpp), the same for a stream as for a regular file.
+    std::uint64_t finish();
+
+    // The current line claims that at least `bytes` bytes follow it (a
+    // header's counts); if not, InputError on this line with
+    // `reason(bytes that follow)`.  Checked at once for a regular file, by
+    // finish() for a stream, whose size is known only at its end.
+    void require_rest(std::uint64_t bytes, std::function<std::string(std::uint64_t)> reason);
 
     // True when the current line has another field.
     bool has_field();
@@ -82,13 +84,20 @@ public:
     std::int64_t integer(std::string_view what);
     // The next field as a finite real.
     double real(std::string_view what);
-    // Optional forms: the default when the line has no more fields.
+    // Optional forms: the default when the line has no more fields.  A
+    // stream may leave out at most left_out_slack reals plus one per
+    // two bytes read so far (a real read takes two bytes or more, a digit and
+    // a separator): a header's counts, which cannot be checked against a
+    // stream's size up front, then cannot make a few bytes fill memory with
+    // default values.
     std::int64_t integer_or(std::int64_t fallback, std::string_view what);
     double real_or(double fallback, std::string_view what);
 
-    // An element count from a header: not negative, and, if large, not more
-    // entries than the rest of the file could hold at `min_bytes_per_entry`
-    // bytes each (so nothing is ever reserved from an unchecked count).
+    // An element count from a header: not negative, and, if large and the
+    // file regular, not more entries than the rest of the file could hold
+    // at `min_bytes_per_entry` bytes each.  From a stream a large count is
+    // accepted: the readers reserve with reserve_hint() and report the file
+    // ending early where it does.
     std::size_t count(std::string_view what, std::size_t min_bytes_per_entry = 2);
 
     [[noreturn]] void fail(std::string reason) const;
@@ -96,15 +105,27 @@ public:
     void warn(const WarningSink& sink, std::string message) const;
 
 private:
+    // A require_rest() claim on a stream, checked by finish().
+    struct RestClaim {
+        std::size_t line;
+        std::uint64_t from;  // offset of the byte after the claiming line
+        std::uint64_t bytes;
+        std::function<std::string(std::uint64_t)> reason;
+    };
+
     std::string_view token();  // the next field, without consuming it
+    // Counts a value a stream's line left out; InputError past the bound.
+    void count_left_out(std::string_view what);
     void skip_blanks() noexcept;
 
     std::string path_;
-    FileText text_;
+    LineSource source_;
     const char* pos_ = nullptr;       // cursor inside the current line
     const char* data_end_ = nullptr;  // end of the current line's data (comment cut off)
-    const char* next_ = nullptr;      // start of the next line
     std::size_t line_ = 0;
+    bool at_end_ = false;
+    std::uint64_t left_out_ = 0;  // reals a stream's lines left out (real_or)
+    std::vector<RestClaim> claims_;
 };
 
 // Tracks the ids in the first column: reports the first one that is not the

@@ -35,3 +35,26 @@ TEST_CASE("the content hash tells byte strings apart", "[io][stamp]") {
     CHECK(io::hash_number(a, b) != io::hash_number(b, a));
     CHECK(io::hash_number(1, h) != io::hash_number(2, h));
 }
+
+TEST_CASE("the content hash of bytes in pieces is the hash of the whole", "[io][stamp]") {
+    std::string text;
+    for (int i = 0; i < 300; ++i) text += static_cast<char>(i * 37 % 256);
+    const std::uint64_t whole = io::hash_bytes(text);
+    // Every cut into two pieces, and pieces of every size up to 17 (words
+    // completed across several pieces, empty pieces between them).
+    for (std::size_t cut = 0; cut <= text.size(); ++cut) {
+        io::ContentHasher h;
+        h.add(std::string_view(text).substr(0, cut));
+        h.add(std::string_view(text).substr(cut));
+        CHECK(h.value() == whole);
+    }
+    for (std::size_t piece = 1; piece <= 17; ++piece) {
+        io::ContentHasher h;
+        for (std::size_t at = 0; at < text.size(); at += piece) {
+            h.add(std::string_view(text).substr(at, piece));
+            h.add({});
+        }
+        CHECK(h.value() == whole);
+    }
+    CHECK(io::ContentHasher().value() == io::hash_bytes(""));
+}

@@ -63,7 +63,7 @@ int run(int argc, const char* const* argv) {
 }
 
 // Exit statuses (man/gpdr.1, EXIT STATUS; README's table).
-constexpr int exit_error = 1;           // the input, the switches, a file
+constexpr int exit_error = 1;           // the input, the switches, a file, the mesh's size
 constexpr int exit_out_of_memory = 2;   // as libtriangle's triangulate() returns
 constexpr int exit_internal_error = 3;  // a bug in gpdr
 
@@ -88,6 +88,9 @@ int main(int argc, char** argv) {
     } catch (const gpdr::ResourceError& e) {
         return fail(exit_error, e.what(), "; use --force to try anyway");
     } catch (const gpdr::Error& e) {
+        // Every other error, a CapacityError's included: a mesh larger than
+        // gpdr's ids can number is refused like the input that asks for it,
+        // and no --force would help.
         return fail(exit_error, e.what());
     } catch (const std::bad_alloc&) {
         return fail(exit_out_of_memory, "out of memory");

@@ -55,7 +55,7 @@ VertexId Mesh::claim_vertices(std::uint32_t count) {
     std::uint32_t first = vertex_end_.load(std::memory_order_relaxed);
     do {
         if (std::uint64_t{first} + count > limit)
-            throw Error("mesh: more than " + std::to_string(limit) + " vertices");
+            throw CapacityError("mesh: more than " + std::to_string(limit) + " vertices");
     } while (!vertex_end_.compare_exchange_weak(first, first + count, std::memory_order_acq_rel));
     if (count > 0) {
         const std::uint32_t last = first + count - 1;
@@ -69,7 +69,7 @@ VertexId Mesh::claim_vertices(std::uint32_t count) {
 
 VertexId Mesh::add_vertices(std::span<const Point> points, VertexKind kind) {
     if (points.size() > index(ghost_vertex))
-        throw Error("mesh: more than " + std::to_string(index(ghost_vertex)) + " vertices");
+        throw CapacityError("mesh: more than " + std::to_string(index(ghost_vertex)) + " vertices");
     const VertexId first = claim_vertices(static_cast<std::uint32_t>(points.size()));
     std::uint32_t v = index(first);
     for (const Point& p : points) {
@@ -90,7 +90,7 @@ Mesh::SpareSlots Mesh::claim_triangle_chunk() {
     const std::uint32_t c = triangle_chunks_.fetch_add(1, std::memory_order_acq_rel);
     if (c >= TriangleTable::max_chunks) {
         triangle_chunks_.fetch_sub(1, std::memory_order_acq_rel);
-        throw Error("mesh: more than " + std::to_string(max_triangles) + " triangles");
+        throw CapacityError("mesh: more than " + std::to_string(max_triangles) + " triangles");
     }
     triangles_.ensure(c);
     SpareSlots s;
@@ -111,7 +111,7 @@ void raise_to(std::atomic<std::uint32_t>& end, std::uint32_t value) {
 
 Mesh::SpareSlots Mesh::claim_triangle_chunk_at(std::uint32_t c) {
     if (c >= TriangleTable::max_chunks)
-        throw Error("mesh: more than " + std::to_string(max_triangles) + " triangles");
+        throw CapacityError("mesh: more than " + std::to_string(max_triangles) + " triangles");
     triangles_.ensure(c);
     raise_to(triangle_chunks_, c + 1);
     SpareSlots s;
@@ -124,7 +124,7 @@ VertexId Mesh::claim_vertex_chunk_at(std::uint32_t c) {
     // The last chunk holds the two reserved ids (ghost_vertex, no_vertex).
     constexpr std::uint64_t limit = index(ghost_vertex);
     const std::uint64_t end = (std::uint64_t{c} + 1) << vertex_chunk_bits;
-    if (end > limit) throw Error("mesh: more than " + std::to_string(limit) + " vertices");
+    if (end > limit) throw CapacityError("mesh: more than " + std::to_string(limit) + " vertices");
     points_.ensure(c);
     kinds_.ensure(c);
     raise_to(vertex_end_, static_cast<std::uint32_t>(end));

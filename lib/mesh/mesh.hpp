@@ -58,7 +58,8 @@ public:
 
     // ---- vertices ----------------------------------------------------------
     // Claims `count` consecutive vertex ids and returns the first; their kind
-    // reads `unused` until set.  Thread-safe.  Throws gpdr::Error past 2^32-2.
+    // reads `unused` until set.  Thread-safe.  Throws gpdr::CapacityError past
+    // 2^32-2.
     VertexId claim_vertices(std::uint32_t count);
     // Appends points with consecutive ids (the first is returned).
     VertexId add_vertices(std::span<const Point> points, VertexKind kind);
@@ -127,7 +128,7 @@ public:
     struct SpareSlots;
     // Claims triangle chunk c (its slots, as claim_triangle_chunk gives them)
     // or vertex chunk c (its ids; the first is returned).  Thread-safe;
-    // throws gpdr::Error past the limits on ids.
+    // throws gpdr::CapacityError past the limits on ids.
     SpareSlots claim_triangle_chunk_at(std::uint32_t c);
     VertexId claim_vertex_chunk_at(std::uint32_t c);
     // Whether chunk c holds ids anyone claimed (a pass over all ids may skip

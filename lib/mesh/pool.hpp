@@ -79,7 +79,8 @@ public:
     // Kills triangle t: bumps its generation and keeps the slot for reuse.
     // Its neighbours' links to it are the caller's business.
     // Destroying a dead slot would corrupt the free list: refused (throws
-    // gpdr::Error; a bug in the caller, checked because it is one branch).
+    // gpdr::InternalError; a bug in the caller, checked because it is one
+    // branch).
     void destroy(TriangleId t) {
         Triangle& r = mesh_->triangle(t);
         if (!r.live()) [[unlikely]]

@@ -135,8 +135,8 @@ Point placement(const Mesh& mesh, EdgeRef s, EdgeRef across, VertexId x, VertexI
     for (int i = 0; !placeable(mesh, s, across, p); ++i) {
         if (i == 64) {
             if (placeable(mesh, s, across, middle)) return middle;
-            throw Error("mesh: cannot place a vertex inside subsegment " + edge_name(x, y) +
-                        " (degenerate triangles around it)");
+            throw SubsegmentSplitError("mesh: cannot place a vertex inside subsegment " +
+                                       edge_name(x, y) + " (degenerate triangles around it)");
         }
         p = midpoint(p, middle);
     }

@@ -43,8 +43,10 @@
 // (created triangles have p at corner 2, except after the flips of a point
 // off the line: then `created` also lists every triangle a flip changed, in
 // no particular corner order).  Nothing is allocated once the
-// buffer has grown.  Throws gpdr::Error when the mesh around s is broken (a
-// cavity that is not a disk) or p cannot be placed in the open quadrilateral.
+// buffer has grown.  Throws gpdr::SubsegmentSplitError when p cannot be
+// placed in the open quadrilateral (the refiner then leaves the subsegment
+// as it is), and gpdr::InternalError when the mesh around s is broken (a
+// cavity that is not a disk); either leaves the mesh as it was.
 
 #include "mesh/insert.hpp"
 

@@ -48,10 +48,10 @@ NodeId Quadtree::allocate(NodeAllocator& alloc) {
         constexpr std::uint32_t block = 64;
         const std::uint32_t first = next_.fetch_add(block, std::memory_order_acq_rel);
         if (std::uint64_t{first} + block > (std::uint64_t{1} << 32) - 2)
-            throw Error("parallel: quadtree too large");
+            throw CapacityError("parallel: quadtree too large");
         const std::uint32_t last = first + block - 1;
         for (std::uint32_t c = first >> 12; c <= last >> 12; ++c)
-            if (!nodes_.ensure(c, true)) throw Error("parallel: quadtree too large");
+            if (!nodes_.ensure(c, true)) throw CapacityError("parallel: quadtree too large");
         alloc.next = first;
         alloc.end = first + block;
     }

@@ -343,7 +343,7 @@ bool LeafRefiner::split_subsegment(Leaf& leaf, EdgeRef e) {
     mesh::InsertResult result;
     try {
         result = mesh::split_subsegment(pool_, e, p, mesh::VertexKind::segment, buffer_);
-    } catch (const Error&) {
+    } catch (const SubsegmentSplitError&) {
         return false;  // degenerate surroundings: the mesh is unchanged, leave the subsegment
     }
     count_steiner_point();

@@ -107,8 +107,8 @@ Step find_wedge(const Mesh& mesh, TriangleId t0, VertexId a, VertexId b) {
             if (t == t0) break;
         }
     }
-    throw Error("segment " + vertex_name(a) + "-" + vertex_name(b) +
-                " leaves the triangulated region");
+    throw GeometryError("segment " + vertex_name(a) + "-" + vertex_name(b) +
+                        " leaves the triangulated region");
 }
 
 // Flags edge e (between u and v) on both sides and records its entry.
@@ -189,8 +189,8 @@ Walk walk(const Mesh& mesh, VertexId a, VertexId b, EdgeRef e, SegmentBuffer& bu
         if (r.is_subsegment(e.edge())) return {true, e, no_vertex};
         const EdgeRef n = r.n[e.edge()];
         if (n.is_none())
-            throw Error("segment " + vertex_name(a) + "-" + vertex_name(b) +
-                        " leaves the triangulated region");
+            throw GeometryError("segment " + vertex_name(a) + "-" + vertex_name(b) +
+                                " leaves the triangulated region");
         const Triangle& u = mesh.triangle(n.triangle());
         const int j = n.edge();
         const VertexId apex = u.v[j];

@@ -98,9 +98,10 @@ void track_corners(const mesh::Mesh& mesh, SegmentBuffer& buffer);
 // Inserts segment a-b (a != b, both vertices of the triangulation) as a
 // chain of subsegments carrying `info`.  `hint` is any live triangle (best:
 // one with corner a).  Returns a live triangle with corner b.  Vertices
-// created at crossings are VertexKind::segment.  Throws gpdr::Error when the
-// segment leaves the triangulated region (a non-convex mesh) or a vertex is
-// not in the triangulation.
+// created at crossings are VertexKind::segment.  Throws gpdr::GeometryError
+// when the segment leaves the triangulated region (a non-convex mesh, -rp),
+// gpdr::InternalError when a vertex is not in the triangulation, and what
+// split_subsegment throws.
 mesh::TriangleId insert_segment(mesh::Pool& pool, mesh::VertexId a, mesh::VertexId b,
                                 mesh::SubsegmentInfo info, mesh::TriangleId hint,
                                 SegmentBuffer& buffer);

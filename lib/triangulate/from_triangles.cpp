@@ -280,13 +280,14 @@ void insert_missing(const TriangleMeshInput& in, Pool& pool, const std::vector<s
                                                    name.vertex(used[a] ? b : a)));
         const SubsegmentInfo info{in.segment_markers.empty() ? 0 : in.segment_markers[s], s};
         const TriangleId start = buffer.corner[a] != no_triangle ? buffer.corner[a] : hint;
+        // What the input can cause is reported against the segment; a bug
+        // (InternalError) or a mesh beyond gpdr's ids (CapacityError) is not
+        // the segment's fault and passes as it is.
         try {
             hint = insert_segment(pool, VertexId{a}, VertexId{b}, info, start, buffer);
-        } catch (const GeometryError&) {
-            throw;
-        } catch (const InternalError&) {
-            throw;
-        } catch (const Error& e) {
+        } catch (const GeometryError& e) {  // it leaves the mesh (a non-convex one)
+            throw GeometryError(what + " and cannot be inserted: " + e.what());
+        } catch (const SubsegmentSplitError& e) {  // a subsegment it crosses takes no vertex
             throw GeometryError(what + " and cannot be inserted: " + e.what());
         }
         report.segment_events.insert(report.segment_events.end(), buffer.events.begin(),

@@ -2,7 +2,8 @@
 // Error types thrown by libgpdr.  The library never prints and never exits:
 // it throws one of these, and apps/gpdr turns it into "gpdr: <what()>" on
 // stderr and exit status 1 (3 for an InternalError: see man/gpdr.1, EXIT
-// STATUS).
+// STATUS).  Every error is one of the subclasses below; Error itself is
+// only their base, for callers that treat them all alike.
 
 #include <cstddef>
 #include <stdexcept>
@@ -63,9 +64,28 @@ public:
     using Error::Error;
 };
 
+// A mesh larger than gpdr can number: more than 2^30 triangle slots or
+// 2^32 - 2 vertices (32-bit ids), or a quadtree of more than 2^32 - 2
+// nodes.  Found as the mesh grows, so no estimate can refuse it beforehand,
+// and more memory or --force would not help.
+class CapacityError : public Error {
+public:
+    using Error::Error;
+};
+
 // Invalid input geometry that is not tied to one line of a file (all points
-// collinear, fewer than three vertices, ...).
+// collinear, fewer than three vertices, a segment of -rp that leaves the
+// mesh, ...).
 class GeometryError : public Error {
+public:
+    using Error::Error;
+};
+
+// A subsegment that cannot take a vertex: the triangles on its sides are so
+// flat that no point of it lies inside both by the exact tests.  The mesh is
+// left as it was.  Refinement leaves such a subsegment as it is; the
+// triangulation stages report it.
+class SubsegmentSplitError : public Error {
 public:
     using Error::Error;
 };

@@ -37,7 +37,11 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
     return row[b.size()];
 }
 
+// A "--name" that is not one of long_option_names: a refused option says
+// why; anything else gets the nearest name, if one is near.
 [[noreturn]] void unknown_long_option(std::string_view name) {
+    for (const RefusedOption& refused : refused_long_options)
+        if (name == refused.name) throw UsageError(std::string(refused.reason));
     std::string_view best;
     std::size_t best_distance = 4;  // more edits than this is no longer a typo
     for (const std::string_view candidate : long_option_names) {
@@ -93,7 +97,7 @@ std::string command_for_files(int argc, const char* const* argv) {
     return command;
 }
 
-// gpdr's long options, the names in long_option_names.  Each is parsed on its
+// gpdr's long options, the names in long_option_names (gpdr/switches.hpp).  Each is parsed on its
 // own (CLI11 wants its arguments reversed) and writes straight into the
 // Options being built.
 class LongOptions {
@@ -121,8 +125,6 @@ public:
             },
             "shared object providing triunsuitable()");
         app_.add_flag_callback("--force", [&options] { options.force = true; });
-        app_.add_flag_callback("--nondeterministic",
-                               [&options] { options.nondeterministic = true; });
         app_.add_flag_callback("--vtk", [&options] { options.write_vtk = true; });
         app_.add_flag_callback("--gmsh", [&options] { options.write_gmsh = true; });
         app_.add_flag_callback("--svg", [&options] { options.write_svg = true; });

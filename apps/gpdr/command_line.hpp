@@ -2,20 +2,9 @@
 // argv -> what gpdr should do: Triangle's switch clusters (lib's
 // parse_switches), gpdr's long options (CLI11), and the input name.
 
-#include <array>
-#include <string_view>
-
 #include <gpdr/options.hpp>
 
 namespace gpdr::app {
-
-// Every long option parse_command_line() accepts: a "--name" argument not in
-// this table is an unknown option, whatever CLI11 knows, and each name here
-// must also be declared to CLI11 in command_line.cpp.  gpdr -h and
-// man/gpdr.1 document each one (tests/cli/switch_reference_test.cpp).
-inline constexpr std::array<std::string_view, 11> long_option_names = {
-    "--threads", "--granularity", "--placement", "--unsuitable",       "--force",  "--vtk",
-    "--gmsh",    "--svg",         "--help",      "--nondeterministic", "--version"};
 
 struct CommandLine {
     enum class Action {

@@ -23,7 +23,7 @@ std::string version_text() { return fmt::format("gpdr {}\n", GPDR_VERSION); }
 std::string usage_text() {
     return "Usage: gpdr [-prq__a__uAcDjevngBPNEIOXzo_YS__iFlsCQVh] [--threads N]\n"
            "            [--granularity N] [--placement NAME] [--unsuitable LIB.so] [--force]\n"
-           "            [--nondeterministic] [--vtk] [--gmsh] [--svg] input_file\n"
+           "            [--vtk] [--gmsh] [--svg] input_file\n"
            "\n"
            "Meshes input_file (.node, or .poly with -p; -r refines a .node/.ele mesh) and\n"
            "writes the result as input.1.node, input.1.ele, ...  Numbers follow their\n"
@@ -119,9 +119,6 @@ std::string help_text() {
            "                         2 optimisation (the GPDR paper's point).\n"
            "  --unsuitable LIB.so    Load triunsuitable() from a shared object (implies -u; it\n"
            "                         replaces one linked into gpdr).\n"
-           "  --nondeterministic     Hand each thread a leaf as soon as it is free instead of\n"
-           "                         refining in rounds: the mesh then depends on the\n"
-           "                         threads' timing.\n"
            "  --force                Refine even when the mesh the area bounds call for is\n"
            "                         estimated to need more memory than is available (gpdr\n"
            "                         refuses such a run otherwise, writing nothing).\n"
@@ -150,7 +147,8 @@ std::string help_text() {
            "error (a bug in gpdr), 4 when -C found problems (no file written), 128 + n\n"
            "when killed by signal n.\n"
            "See gpdr(1) for the file formats and the few deliberate differences from\n"
-           "Triangle.\n";
+           "Triangle.  --nondeterministic is refused: the files are the same for every\n"
+           "thread count from 2 up, and -j1 refines on one thread in Triangle's order.\n";
 }
 
 }  // namespace gpdr::app

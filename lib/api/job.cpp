@@ -2,8 +2,6 @@
 // and collecting what -V and -C report.  Each stage takes the data of the
 // one before and hands its result on; none reaches back.
 
-#include <atomic>
-#include <chrono>
 #include <optional>
 
 #include <fmt/format.h>
@@ -14,32 +12,19 @@
 #include <gpdr/memory_job.hpp>
 
 #include "api/job_stages.hpp"
-#include "api/memory_available.hpp"
-#include "api/memory_estimate.hpp"
 #include "api/run_stamp.hpp"
 #include "check/checker.hpp"
 #include "check/input_check.hpp"
 #include "mesh/traverse.hpp"
 #include "parallel/refine_parallel.hpp"
+#include "parallel/stopwatch.hpp"
 #include "refine/quality.hpp"
 #include "refine/refine.hpp"
 
 namespace gpdr {
 namespace {
 
-class Stopwatch {
-public:
-    // Seconds since the last call (or since construction).
-    double lap() {
-        const auto now = std::chrono::steady_clock::now();
-        const double s = std::chrono::duration<double>(now - last_).count();
-        last_ = now;
-        return s;
-    }
-
-private:
-    std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
-};
+using parallel::Stopwatch;
 
 std::string ms(double seconds) { return fmt::format("{:.0f}", seconds * 1000); }
 
@@ -83,12 +68,9 @@ std::vector<std::string> summary_lines(const JobResult& r, const Options& option
 // finished mesh as arrays and its -V quality statistics.
 struct Meshed {
     api::Triangulated tri;
+    std::optional<api::Refinement> refinement;  // when the switches ask for it
     api::MeshArrays arrays;
-    bool refining = false;
-    refine::RefineReport refined;
-    std::vector<std::string> parallel_lines;
     std::vector<std::string> quality;
-    refine::UserTest user_test;  // -u: the test refinement met, for -C
 };
 
 // -C: the mesh on its own (topology, orientation, constrained Delaunay),
@@ -96,26 +78,28 @@ struct Meshed {
 // was asked to meet and did not give up on; none when a limit stopped it).
 std::vector<std::string> check(const Options& options, int base,
                                const mesh::InputGeometry& geometry, const api::Triangulated& tri,
-                               const Meshed& m) {
+                               const std::optional<api::Refinement>& refinement) {
     mesh::CheckOptions own;
     own.base = base;
     own.threads = parallel::thread_count(options.threads);
     std::vector<std::string> problems = mesh::check_mesh(tri.mesh, own);
     mesh::InputCheckOptions against;
     against.base = base;
-    if (m.refining && m.refined.stopped == refine::RefineReport::Stop::none) {
+    if (refinement && refinement->report.refine.stopped == refine::RefineReport::Stop::none) {
+        const refine::RefineReport& refined = refinement->report.refine;
+        const refine::UserTest& user_test = refinement->user_test;
         against.min_angle = options.quality ? options.min_angle : 0;
         against.max_area = options.area_limit ? options.max_area : 0;
         against.regional_area = options.regional_area && !options.refine;
         against.area_field = true;  // when the input had an .area file
-        against.exempt = m.refined.given_up_triangles;
-        if (m.user_test)
+        against.exempt = refined.given_up_triangles;
+        if (user_test)
             against.unsuitable = [&](mesh::TriangleId t) {
                 const mesh::Triangle& r = tri.mesh.triangle(t);
                 const double area =
                     0.5 * geometry::orient2d(tri.mesh.point(r.v[0]), tri.mesh.point(r.v[1]),
                                              tri.mesh.point(r.v[2]));
-                return refine::call_user_test(m.user_test, tri.mesh, r, area) != 0;
+                return refine::call_user_test(user_test, tri.mesh, r, area) != 0;
             };
     }
     against.region_attributes = options.region_attributes && options.poly && !options.refine;
@@ -125,10 +109,31 @@ std::vector<std::string> check(const Options& options, int base,
     return problems;
 }
 
-// Triangulates, refines, checks (-C) and turns the mesh into arrays,
-// filling in `result`'s counts and the triangulate and refine times.  The
-// triangles are always materialised with `materialise`, else only when an
-// output derives from them.  Takes the vertices out of `input`.
+// The finished mesh as arrays, and the counts of `result` they give.  The
+// triangles are materialised with `materialise`, else only when an output
+// derives from them.  Takes the vertices out of `input`.
+void to_arrays(const Options& options, api::Input& input, bool materialise, Meshed& m,
+               JobResult& result) {
+    // Neighbours cost 12 bytes per triangle: only the outputs that are
+    // derived from them get them.
+    const bool neighbours = options.write_neighbours || options.write_edges ||
+                            options.write_voronoi || options.write_off || options.order == 2;
+    materialise = materialise || neighbours || options.jettison;
+    m.arrays =
+        api::mesh_to_arrays(m.tri.mesh, std::move(input.nodes.data), result.input_vertices,
+                            m.tri.triangle_attribute_count, m.tri.region_attributes, neighbours,
+                            materialise, parallel::thread_count(options.threads));
+    result.vertices = m.arrays.nodes.size() - m.tri.duplicates;
+    result.triangles = m.arrays.triangle_count;
+    result.hull_edges = m.arrays.hull_edge_count;
+    result.edges =
+        (3 * result.triangles + result.hull_edges) / 2;  // each edge has two sides but the hull's
+    result.segments = m.tri.mesh.subsegments().size();
+}
+
+// The stages from the input to the arrays: triangulate, refine, check (-C),
+// to arrays, and -V's quality statistics; fills in `result`'s counts and the
+// stages' times.
 Meshed make_mesh(const Options& options, api::Input& input, const WarningSink& warn,
                  const JobPlugins& plugins, bool materialise, JobResult& result, Stopwatch& clock,
                  Progress* progress = nullptr) {
@@ -137,73 +142,19 @@ Meshed make_mesh(const Options& options, api::Input& input, const WarningSink& w
     // -C compares the mesh with the input as read, not as the stages saw it.
     std::optional<mesh::InputGeometry> geometry;
     if (options.check) geometry = api::input_geometry(options, input);
-    api::Triangulated& tri = m.tri;
-    tri = api::triangulate_input(options, input, warn);  // takes the coordinates
+    m.tri = api::triangulate_input(options, input, warn);  // takes the coordinates
     result.triangulate_seconds = clock.lap();
 
-    m.refining = api::wants_refinement(options);
-    if (m.refining) {
-        refine::RefineSettings settings =
-            api::refine_settings(options, plugins, input.poly ? &*input.poly : nullptr);
-        settings.criteria.area_field = tri.area_field.get();
-        m.user_test = settings.criteria.user_test;
-        settings.criteria.diametral_circles = options.conforming_delaunay;
-        settings.segment_ends = tri.segment_ends;
-        // -S counts every vertex gpdr adds, as Triangle's does: those -D
-        // added, and those where segments cross.
-        const std::uint64_t added = tri.steiner_points + tri.cdt_report.new_vertices.size();
-        if (settings.steiner_limit)
-            settings.max_steiner = settings.max_steiner > added ? settings.max_steiner - added : 0;
-        api::warn_before_refinement(options, warn);
-        api::refuse_beyond_memory(
-            options,
-            api::estimate_memory(options, tri.mesh, settings, input.nodes.data.attribute_count),
-            api::memory_available());
-        std::atomic<std::uint64_t> steiner_counter{0};
-        if (progress != nullptr) {
-            progress->enter(Progress::Stage::refining);
-            // The refining threads count the vertices they add in one
-            // atomic, in batches: reading it from the program's thread
-            // costs them nothing.  (The mesh's vertex ids are no count:
-            // parallel refinement claims them in chunks by a fixed rule,
-            // with holes.)
-            settings.steiner_counter = &steiner_counter;
-            progress->watch([&steiner_counter, before = std::uint64_t{tri.mesh.vertex_end()}] {
-                return before + steiner_counter.load(std::memory_order_relaxed);
-            });
-        }
-        struct Unwatch {
-            Progress* p;
-            ~Unwatch() {
-                if (p != nullptr) p->unwatch();
-            }
-        } unwatch{progress};
-        m.parallel_lines = api::refine(tri.mesh, settings, options, m.refined);
-        api::warn_after_refinement(m.refined, warn);
-    }
+    if (api::wants_refinement(options))
+        m.refinement = api::refine_stage(options, plugins, input, m.tri, warn, progress);
     result.refine_seconds = clock.lap();
     if (progress != nullptr) progress->enter(Progress::Stage::preparing);
 
     if (options.check) {
         result.checked = true;
-        result.check_problems = check(options, input.nodes.base, *geometry, tri, m);
+        result.check_problems = check(options, input.nodes.base, *geometry, m.tri, m.refinement);
     }
-
-    // Neighbours cost 12 bytes per triangle: only the outputs that are
-    // derived from them get them.
-    const bool neighbours = options.write_neighbours || options.write_edges ||
-                            options.write_voronoi || options.write_off || options.order == 2;
-    // The triangle array itself only for what is derived from it.
-    materialise = materialise || neighbours || options.jettison;
-    m.arrays = api::mesh_to_arrays(tri.mesh, std::move(input.nodes.data), result.input_vertices,
-                                   tri.triangle_attribute_count, tri.region_attributes, neighbours,
-                                   materialise, parallel::thread_count(options.threads));
-    result.vertices = m.arrays.nodes.size() - tri.duplicates;
-    result.triangles = m.arrays.triangle_count;
-    result.hull_edges = m.arrays.hull_edge_count;
-    result.edges =
-        (3 * result.triangles + result.hull_edges) / 2;  // each edge has two sides but the hull's
-    result.segments = tri.mesh.subsegments().size();
+    to_arrays(options, input, materialise, m, result);
     if (options.verbosity > 0) {
         // Before -o2 changes the triangles; not counted as output time (as
         // in Triangle, whose "Output milliseconds" are the writing alone).
@@ -217,12 +168,16 @@ Meshed make_mesh(const Options& options, api::Input& input, const WarningSink& w
 
 // The -V lines, once every stage has been timed.
 void add_statistics(JobResult& result, const Options& options, const Meshed& m) {
-    result.statistics = summary_lines(result, options, m.refining, m.refined, m.tri.steiner_points);
-    // The threads' times are -V's detail (libtriangle prints the rest
-    // without it).
-    if (options.verbosity > 0)
-        result.statistics.insert(result.statistics.end(), m.parallel_lines.begin(),
-                                 m.parallel_lines.end());
+    const refine::RefineReport none;
+    result.statistics =
+        summary_lines(result, options, m.refinement.has_value(),
+                      m.refinement ? m.refinement->report.refine : none, m.tri.steiner_points);
+    // The schedule and the threads' times are -V's detail (libtriangle
+    // prints the rest without it).
+    if (options.verbosity > 0 && m.refinement) {
+        const std::vector<std::string> lines = api::refinement_lines(*m.refinement);
+        result.statistics.insert(result.statistics.end(), lines.begin(), lines.end());
+    }
     if (!m.quality.empty()) {
         result.statistics.emplace_back();
         result.statistics.insert(result.statistics.end(), m.quality.begin(), m.quality.end());

@@ -23,6 +23,7 @@
 #include "check/input_check.hpp"
 #include "geometry/area_field.hpp"
 #include "mesh/mesh.hpp"
+#include "parallel/refine_parallel.hpp"
 #include "refine/refine.hpp"
 #include "triangulate/pslg.hpp"
 
@@ -71,17 +72,25 @@ struct Triangulated {
 };
 Triangulated triangulate_input(const Options& options, Input& input, const WarningSink& warn);
 
-// Refinement: whether the switches ask for it, its settings (throws
-// UsageError for -u with no function), and warnings before and after.
+// Refinement: whether the switches ask for it.
 bool wants_refinement(const Options& options);
-refine::RefineSettings refine_settings(const Options& options, const JobPlugins& plugins,
-                                       const PolyFile* poly);
-void warn_before_refinement(const Options& options, const WarningSink& warn);
-// Refines on one thread (-j1, or -S, whose limit is exact only there) or in
-// parallel; returns the -V lines on the threads' time (none for one thread).
-std::vector<std::string> refine(mesh::Mesh& mesh, const refine::RefineSettings& settings,
-                                const Options& options, refine::RefineReport& report);
-void warn_after_refinement(const refine::RefineReport& report, const WarningSink& warn);
+// What refinement did: the schedule it ran on, the refiner's report (its
+// `refine` member as refine_mesh reports it), and the user test it met.
+struct Refinement {
+    parallel::Schedule schedule;
+    parallel::ParallelReport report;
+    refine::UserTest user_test;
+};
+// The refinement stage: the settings the switches ask for (throws
+// UsageError for -u with no function), the -S budget left after the
+// vertices triangulation added, the memory refusal (refuse_beyond_memory),
+// the progress line's count, the refiner on the schedule the options choose,
+// and the warnings before and after.
+Refinement refine_stage(const Options& options, const JobPlugins& plugins, const Input& input,
+                        Triangulated& tri, const WarningSink& warn, Progress* progress);
+// -V's lines on a refinement: its schedule and why, and for rounds their
+// shape and each thread's time.
+std::vector<std::string> refinement_lines(const Refinement& refinement);
 
 // The finished mesh as arrays.  `nodes` are the input vertices (ids 0..n-1 of
 // the mesh; attributes and markers kept); the vertices the mesh added after

@@ -1,6 +1,9 @@
 // The refinement stage of a run: switches -> refine::RefineSettings, the
-// refiner itself, and what its report means to the user (warnings).
+// budget and the memory check, the refiner on the schedule the options
+// choose (parallel/schedule.hpp), and what its report means to the user
+// (warnings, -V lines).
 
+#include <atomic>
 #include <cmath>
 
 #if defined(__GLIBC__)
@@ -12,6 +15,8 @@
 #include <gpdr/errors.hpp>
 
 #include "api/job_stages.hpp"
+#include "api/memory_available.hpp"
+#include "api/memory_estimate.hpp"
 #include "parallel/refine_parallel.hpp"
 #include "parallel/rounds.hpp"
 #include "refine/refine.hpp"
@@ -24,6 +29,10 @@ bool wants_refinement(const Options& o) {
     return o.quality || o.area_limit || o.regional_area || o.user_test;
 }
 
+namespace {
+
+// The settings the switches ask for (throws UsageError for -u with no
+// function).
 refine::RefineSettings refine_settings(const Options& o, const JobPlugins& plugins,
                                        const PolyFile* poly) {
     refine::RefineSettings s;
@@ -49,11 +58,11 @@ refine::RefineSettings refine_settings(const Options& o, const JobPlugins& plugi
         else
             s.criteria.user_test = plugins.triunsuitable;
     }
+    s.criteria.diametral_circles = o.conforming_delaunay;
     s.placement = o.placement;
     s.no_segment_splitting = o.no_segment_splitting;
     s.steiner_limit = o.steiner_limit;
     s.max_steiner = o.max_steiner;
-    s.granularity = o.granularity == 0 ? 1 : o.granularity;
     return s;
 }
 
@@ -66,76 +75,32 @@ void warn_before_refinement(const Options& o, const WarningSink& warn) {
                         o.min_angle)});
 }
 
-std::vector<std::string> refine(mesh::Mesh& mesh, const refine::RefineSettings& settings,
-                                const Options& o, refine::RefineReport& report) {
-    parallel::ParallelOptions p;
-    p.threads = o.threads;
-    p.granularity = o.granularity;
-    // -j1 runs the sequential refiner (one leaf, no quadtree, Triangle's
-    // order).  So does -S, whose limit is exact only on one thread, and so
-    // does an angle bound above 33 degrees (max_quadtree_angle).  -j0 on a
-    // machine with one hardware thread runs the rounds on it: the same mesh
-    // as -j0 anywhere else.
-    const bool high_angle = o.quality && o.min_angle > parallel::max_quadtree_angle;
-    p.one_leaf_for_one_thread = o.threads == 1 || o.steiner_limit || high_angle;
-    p.deterministic = !o.nondeterministic;
-    if (o.steiner_limit || high_angle) p.threads = 1;
-    parallel::ParallelReport r;
-    parallel::refine_parallel(mesh, settings, p, r);
-#if defined(__GLIBC__)
-    // The refiners' queues, lists and quadtree are freed now, much of it in
-    // the worker threads' own malloc arenas, which keep freed memory
-    // mapped.  The output arrays come next and would be mapped on top of
-    // it, raising the peak by what refinement had in use (about 140 MB on
-    // the graded pipe with -j2): give it back first.
-    malloc_trim(0);
-#endif
-    report = std::move(r.refine);
-    std::vector<std::string> lines;
-    if (high_angle && o.threads != 1) {
-        lines.emplace_back();
-        lines.push_back(fmt::format(
-            "Refinement on one thread, in Triangle's order: the angle bound is above {} degrees",
-            parallel::max_quadtree_angle));
+// While it lives, the progress line shows the vertices refinement adds: the
+// refining threads count them in one atomic, in batches, so reading it from
+// the program's thread costs them nothing.  (The mesh's vertex ids are no
+// count: parallel refinement claims them in chunks by a fixed rule, with
+// holes.)
+class ProgressWatch {
+public:
+    ProgressWatch(Progress* progress, const mesh::Mesh& mesh, refine::RefineSettings& settings)
+        : progress_(progress) {
+        if (progress_ == nullptr) return;
+        progress_->enter(Progress::Stage::refining);
+        settings.steiner_counter = &added_;
+        progress_->watch([this, before = std::uint64_t{mesh.vertex_end()}] {
+            return before + added_.load(std::memory_order_relaxed);
+        });
     }
-    if (r.threads <= 1 && r.rounds.empty()) return lines;
-    // The GPDR paper's Fig. 5 (right): where each thread's time went.
-    const auto line = [](const char* who, unsigned i, const parallel::ThreadTimes& t) {
-        return fmt::format("  {}{}: refining {:.0f} ms, managing {:.0f} ms, waiting {:.0f} ms", who,
-                           i, t.refining * 1000, t.managing * 1000, t.waiting * 1000);
-    };
-    lines.emplace_back();
-    if (r.rounds.empty()) {
-        lines.push_back(fmt::format(
-            "Parallel refinement: {} worker threads, granularity {}, {} leaves, {} assignments",
-            r.threads, r.granularity, r.leaves, r.assignments));
-        lines.push_back(fmt::format("  master: managing {:.0f} ms, waiting {:.0f} ms",
-                                    r.master.managing * 1000, r.master.waiting * 1000));
-        for (std::size_t w = 0; w < r.workers.size(); ++w)
-            lines.push_back(line("worker ", unsigned(w + 1), r.workers[w]));
-        return lines;
+    ~ProgressWatch() {
+        if (progress_ != nullptr) progress_->unwatch();
     }
-    // The deterministic schedule: its rounds, and what they allow.
-    const parallel::ScheduleShape s = parallel::schedule_shape(r.rounds);
-    lines.push_back(fmt::format(
-        "Parallel refinement: {} threads, granularity {}, {} leaves, {} rounds refining {} leaves",
-        r.threads, r.granularity, r.leaves, s.rounds, s.runs));
-    lines.push_back(fmt::format("  leaves per round: {} fewest, {} median, {} most", s.fewest,
-                                s.median, s.most));
-    lines.push_back(fmt::format(
-        "  work {} triangles made, span {} (the largest leaf's of each round): work / span {:.1f}",
-        s.work, s.span, s.parallelism()));
-    lines.push_back(fmt::format(
-        "  speed-up the rounds allow: {:.1f} on 4 threads, {:.1f} on 16, "
-        "{:.1f} on 64",
-        parallel::predicted_speedup(r.rounds, 4), parallel::predicted_speedup(r.rounds, 16),
-        parallel::predicted_speedup(r.rounds, 64)));
-    lines.push_back(
-        fmt::format("  between rounds (the calling thread): {:.0f} ms", r.master.managing * 1000));
-    for (std::size_t w = 0; w < r.workers.size(); ++w)
-        lines.push_back(line("thread ", unsigned(w + 1), r.workers[w]));
-    return lines;
-}
+    ProgressWatch(const ProgressWatch&) = delete;
+    ProgressWatch& operator=(const ProgressWatch&) = delete;
+
+private:
+    Progress* progress_;
+    std::atomic<std::uint64_t> added_{0};
+};
 
 void warn_after_refinement(const refine::RefineReport& r, const WarningSink& warn) {
     using Stop = refine::RefineReport::Stop;
@@ -168,6 +133,76 @@ void warn_after_refinement(const refine::RefineReport& r, const WarningSink& war
         warn(Warning{"", 0,
                      fmt::format("{} triangles still fail the quality bounds (please report this)",
                                  r.left_other)});
+}
+
+void trim_freed_memory() {
+#if defined(__GLIBC__)
+    // The refiners' queues, lists and quadtree are freed now, much of it in
+    // the refining threads' own malloc arenas, which keep freed memory
+    // mapped.  The output arrays come next and would be mapped on top of
+    // it, raising the peak by what refinement had in use (about 140 MB on
+    // the graded pipe with -j2): give it back first.
+    malloc_trim(0);
+#endif
+}
+
+}  // namespace
+
+Refinement refine_stage(const Options& options, const JobPlugins& plugins, const Input& input,
+                        Triangulated& tri, const WarningSink& warn, Progress* progress) {
+    refine::RefineSettings settings =
+        refine_settings(options, plugins, input.poly ? &*input.poly : nullptr);
+    settings.criteria.area_field = tri.area_field.get();
+    settings.segment_ends = tri.segment_ends;
+    // -S counts every vertex gpdr adds, as Triangle's does: those -D added,
+    // and those where segments cross.
+    const std::uint64_t added = tri.steiner_points + tri.cdt_report.new_vertices.size();
+    if (settings.steiner_limit)
+        settings.max_steiner = settings.max_steiner > added ? settings.max_steiner - added : 0;
+    warn_before_refinement(options, warn);
+    refuse_beyond_memory(
+        options, estimate_memory(options, tri.mesh, settings, input.nodes.data.attribute_count),
+        memory_available());
+
+    Refinement r;
+    r.schedule = parallel::choose_schedule(options);
+    r.user_test = settings.criteria.user_test;
+    {
+        const ProgressWatch watch(progress, tri.mesh, settings);
+        parallel::refine_parallel(tri.mesh, settings, r.schedule, r.report);
+    }
+    trim_freed_memory();
+    warn_after_refinement(r.report.refine, warn);
+    return r;
+}
+
+std::vector<std::string> refinement_lines(const Refinement& r) {
+    std::vector<std::string> lines{"", r.schedule.describe()};
+    const parallel::ParallelReport& p = r.report;
+    if (p.rounds.empty()) return lines;
+    // The GPDR paper's Fig. 5 (right): where each thread's time went.
+    const auto line = [](unsigned i, const parallel::ThreadTimes& t) {
+        return fmt::format("  thread {}: refining {:.0f} ms, managing {:.0f} ms, waiting {:.0f} ms",
+                           i, t.refining * 1000, t.managing * 1000, t.waiting * 1000);
+    };
+    // The rounds, and what they allow.
+    const parallel::ScheduleShape s = parallel::schedule_shape(p.rounds);
+    lines.push_back(
+        fmt::format("  {} leaves, {} rounds refining {} leaves", p.leaves, s.rounds, s.runs));
+    lines.push_back(fmt::format("  leaves per round: {} fewest, {} median, {} most", s.fewest,
+                                s.median, s.most));
+    lines.push_back(fmt::format(
+        "  work {} triangles made, span {} (the largest leaf's of each round): work / span {:.1f}",
+        s.work, s.span, s.parallelism()));
+    lines.push_back(fmt::format(
+        "  speed-up the rounds allow: {:.1f} on 4 threads, {:.1f} on 16, {:.1f} on 64",
+        parallel::predicted_speedup(p.rounds, 4), parallel::predicted_speedup(p.rounds, 16),
+        parallel::predicted_speedup(p.rounds, 64)));
+    lines.push_back(
+        fmt::format("  between rounds (the calling thread): {:.0f} ms", p.master.managing * 1000));
+    for (std::size_t w = 0; w < p.workers.size(); ++w)
+        lines.push_back(line(unsigned(w + 1), p.workers[w]));
+    return lines;
 }
 
 }  // namespace gpdr::api

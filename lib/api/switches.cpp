@@ -41,10 +41,6 @@ bool is_sign(char c) { return c == '-' || c == '+'; }
 // Every letter parse_switches() knows, for suggestions.
 constexpr std::string_view known_letters = "prqauAcDjevngBPNEIOXzoYSiFlsCQVh";
 
-// gpdr's long options, for suggesting one when a single dash was typed.
-constexpr std::array<std::string_view, 6> long_options = {"threads",    "granularity", "placement",
-                                                          "unsuitable", "help",        "version"};
-
 // Reads one cluster; `text` has no leading '-', `shown` is the cluster as
 // the user typed it, for messages.
 class ClusterReader {
@@ -329,8 +325,10 @@ private:
         const auto eq = word.find('=');
         if (eq != std::string_view::npos) word = word.substr(0, eq);
         if (word.size() < 3) return {};
-        for (const std::string_view name : long_options)
+        for (std::string_view name : long_option_names) {
+            name.remove_prefix(2);  // "--"
             if (name.substr(0, word.size()) == word) return name;
+        }
         return {};
     }
 

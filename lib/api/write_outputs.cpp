@@ -91,6 +91,117 @@ PreparedOutputs prepare_outputs(const Options& o, const mesh::Mesh& mesh, MeshAr
     return p;
 }
 
+namespace {
+
+// What the writers of the table below read: the request, the arrays and
+// what was derived from them.  Everything stays put until write_all returns.
+struct OutputContext {
+    const Options& options;
+    const FileNames& names;
+    const OutputRequest& request;
+    const MeshArrays& arrays;
+    const PreparedOutputs& prepared;
+    const io::WriteFormat& format;
+    const io::MeshExport& exported;  // for the files other programs read
+    const SegmentSet& segments;      // the .poly's, the .msh's and the .svg's
+    bool want_poly;                  // -p (or -c on a point set), not -P
+};
+
+// One row of the output table: when the switches ask for the file, where it
+// goes, and how it is written.
+struct OutputFile {
+    bool (*wanted)(const OutputContext&);
+    std::string FileNames::*path;
+    void (*write)(io::OutputTransaction&, const std::string& path, const OutputContext&);
+};
+
+// Triangle's output .poly: the segments (and the input's holes and
+// regions), its vertices in the .node beside it.
+void write_output_poly(io::OutputTransaction& out, const std::string& path,
+                       const OutputContext& c) {
+    PolyFile poly;
+    poly.nodes_from_node_file = true;
+    poly.nodes.attribute_count = c.arrays.nodes.attribute_count;
+    // write_poly() takes the header's marker column from nodes.markers.
+    if (c.arrays.nodes.has_markers()) poly.nodes.markers.assign(1, 0);
+    poly.segments = c.segments;
+    if (c.request.poly) {
+        poly.holes = c.request.poly->holes;
+        poly.regions = c.request.poly->regions;
+    }
+    io::write_poly(out, path, poly, c.format);
+}
+
+// The Voronoi diagram's files carry no markers.
+io::WriteFormat without_markers(const io::WriteFormat& format) {
+    io::WriteFormat plain = format;
+    plain.markers = false;
+    return plain;
+}
+
+// Every file gpdr writes, in the order they are written and renamed into
+// place (the largest first: they take longest to format).
+constexpr OutputFile output_files[] = {
+    {[](const OutputContext& c) { return !c.options.no_node_output; }, &FileNames::out_node,
+     [](io::OutputTransaction& out, const std::string& path, const OutputContext& c) {
+         io::write_node(out, path, c.arrays.nodes, c.format);
+     }},
+    {[](const OutputContext& c) { return !c.options.no_ele_output; }, &FileNames::out_ele,
+     [](io::OutputTransaction& out, const std::string& path, const OutputContext& c) {
+         io::write_ele(out, path, triangle_source(c.arrays), c.format);
+     }},
+    {[](const OutputContext& c) { return c.want_poly; }, &FileNames::out_poly, write_output_poly},
+    {[](const OutputContext& c) { return c.options.write_edges; }, &FileNames::out_edge,
+     [](io::OutputTransaction& out, const std::string& path, const OutputContext& c) {
+         io::write_edge(out, path, c.prepared.edges, c.format);
+     }},
+    {[](const OutputContext& c) { return c.options.write_voronoi; }, &FileNames::out_v_node,
+     [](io::OutputTransaction& out, const std::string& path, const OutputContext& c) {
+         io::write_node(out, path, c.prepared.voronoi.vertices, without_markers(c.format));
+     }},
+    {[](const OutputContext& c) { return c.options.write_voronoi; }, &FileNames::out_v_edge,
+     [](io::OutputTransaction& out, const std::string& path, const OutputContext& c) {
+         io::write_voronoi_edge(out, path, c.prepared.voronoi.edges, without_markers(c.format));
+     }},
+    {[](const OutputContext& c) { return c.options.write_neighbours; }, &FileNames::out_neigh,
+     [](io::OutputTransaction& out, const std::string& path, const OutputContext& c) {
+         io::write_neigh(out, path, c.arrays.neighbours, c.format);
+     }},
+    {[](const OutputContext& c) { return c.options.write_off; }, &FileNames::out_off,
+     [](io::OutputTransaction& out, const std::string& path, const OutputContext& c) {
+         io::write_off(out, path, c.arrays.nodes, c.arrays.triangles, c.prepared.edge_count,
+                       c.format);
+     }},
+    {[](const OutputContext& c) { return c.options.write_vtk; }, &FileNames::out_vtu,
+     [](io::OutputTransaction& out, const std::string& path, const OutputContext& c) {
+         io::write_vtu(out, path, c.exported, c.format);
+     }},
+    {[](const OutputContext& c) { return c.options.write_gmsh; }, &FileNames::out_msh,
+     [](io::OutputTransaction& out, const std::string& path, const OutputContext& c) {
+         io::write_msh(out, path, c.exported, c.format);
+     }},
+    {[](const OutputContext& c) { return c.options.write_svg; }, &FileNames::out_svg,
+     [](io::OutputTransaction& out, const std::string& path, const OutputContext& c) {
+         io::write_svg(out, path, c.exported, c.format);
+     }},
+};
+
+// What the files for other programs read: the arrays, and the triangles
+// once per pass they make (a fresh source each time).
+io::MeshExport exported_mesh(const MeshArrays& arrays, const SegmentSet& segments) {
+    io::MeshExport exported;
+    const io::EleSource first = triangle_source(arrays);
+    exported.nodes = &arrays.nodes;
+    exported.triangle_count = first.count;
+    exported.corners_per_triangle = first.corners_per_triangle;
+    exported.attribute_count = first.attribute_count;
+    exported.triangles = [&arrays] { return triangle_source(arrays); };
+    exported.segments = &segments;
+    return exported;
+}
+
+}  // namespace
+
 std::vector<std::string> write_outputs(const OutputRequest& request, const mesh::Mesh& mesh,
                                        MeshArrays& arrays) {
     const Options& o = *request.options;
@@ -104,91 +215,23 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
     const bool want_poly =
         (o.poly || request.write_hull_poly) && !o.no_poly_output && !names.out_poly.empty();
     const PreparedOutputs prepared = prepare_outputs(o, mesh, arrays);
-    const EdgeSet& edges = prepared.edges;
-    const VoronoiDiagram& voronoi = prepared.voronoi;
-    const std::uint64_t edge_count = prepared.edge_count;
-    const bool for_others = o.write_vtk || o.write_gmsh || o.write_svg;
     static const SegmentSet no_segments;
     const SegmentSet& segments =
         want_poly || o.write_gmsh || o.write_svg ? arrays.segments : no_segments;
-    // What the files for other programs read: the arrays, and the
-    // triangles once per pass they make (a fresh source each time).
-    io::MeshExport exported;
-    if (for_others) {
-        const io::EleSource first = triangle_source(arrays);
-        exported.nodes = &arrays.nodes;
-        exported.triangle_count = first.count;
-        exported.corners_per_triangle = first.corners_per_triangle;
-        exported.attribute_count = first.attribute_count;
-        exported.triangles = [&arrays] { return triangle_source(arrays); };
-        exported.segments = &segments;
-    }
+    const bool for_others = o.write_vtk || o.write_gmsh || o.write_svg;
+    const io::MeshExport exported = for_others ? exported_mesh(arrays, segments) : io::MeshExport{};
+    const OutputContext context{o,      names,    request,  arrays,   prepared,
+                                format, exported, segments, want_poly};
 
-    // Each job keeps what it needs by value or refers to data that stays
-    // put until write_all returns; all of it is only read.
     std::vector<FileJob> jobs;
-    const auto add = [&](const std::string& target,
-                         std::function<void(io::OutputTransaction&)> write) {
-        jobs.push_back({target, std::move(write)});
-    };
-    if (!o.no_node_output)
-        add(names.out_node, [&](io::OutputTransaction& out) {
-            io::write_node(out, names.out_node, arrays.nodes, format);
-        });
-    if (!o.no_ele_output)
-        add(names.out_ele, [&](io::OutputTransaction& out) {
-            io::write_ele(out, names.out_ele, triangle_source(arrays), format);
-        });
-    if (want_poly) {
-        add(names.out_poly, [&](io::OutputTransaction& out) {
-            PolyFile poly;
-            poly.nodes_from_node_file = true;  // Triangle's output .poly refers to the .node
-            poly.nodes.attribute_count = arrays.nodes.attribute_count;
-            // write_poly() takes the header's marker column from nodes.markers.
-            if (arrays.nodes.has_markers()) poly.nodes.markers.assign(1, 0);
-            poly.segments = segments;
-            if (request.poly) {
-                poly.holes = request.poly->holes;
-                poly.regions = request.poly->regions;
-            }
-            io::write_poly(out, names.out_poly, poly, format);
-        });
+    for (const OutputFile& file : output_files) {
+        if (!file.wanted(context)) continue;
+        const std::string& path = names.*file.path;
+        jobs.push_back({path, [&context, &file, &path](io::OutputTransaction& out) {
+                            file.write(out, path, context);
+                        }});
     }
-    if (o.write_edges)
-        add(names.out_edge, [&](io::OutputTransaction& out) {
-            io::write_edge(out, names.out_edge, edges, format);
-        });
-    if (o.write_voronoi) {
-        io::WriteFormat plain = format;
-        plain.markers = false;
-        add(names.out_v_node, [&voronoi, &names, plain](io::OutputTransaction& out) {
-            io::write_node(out, names.out_v_node, voronoi.vertices, plain);
-        });
-        add(names.out_v_edge, [&voronoi, &names, plain](io::OutputTransaction& out) {
-            io::write_voronoi_edge(out, names.out_v_edge, voronoi.edges, plain);
-        });
-    }
-    if (o.write_neighbours)
-        add(names.out_neigh, [&](io::OutputTransaction& out) {
-            io::write_neigh(out, names.out_neigh, arrays.neighbours, format);
-        });
-    if (o.write_off)
-        add(names.out_off, [&](io::OutputTransaction& out) {
-            io::write_off(out, names.out_off, arrays.nodes, arrays.triangles, edge_count, format);
-        });
-    if (o.write_vtk)
-        add(names.out_vtu, [&](io::OutputTransaction& out) {
-            io::write_vtu(out, names.out_vtu, exported, format);
-        });
-    if (o.write_gmsh)
-        add(names.out_msh, [&](io::OutputTransaction& out) {
-            io::write_msh(out, names.out_msh, exported, format);
-        });
     if (request.progress != nullptr) request.progress->set_files(jobs.size());
-    if (o.write_svg)
-        add(names.out_svg, [&](io::OutputTransaction& out) {
-            io::write_svg(out, names.out_svg, exported, format);
-        });
     write_all(jobs, threads, request.progress);
     std::vector<std::string> written;
     for (const FileJob& j : jobs) written.push_back(j.target);

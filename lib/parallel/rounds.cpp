@@ -1,27 +1,22 @@
-// The deterministic schedule's rounds (see rounds.hpp): the master's loop,
-// the threads that run the lanes, and the shape of the recorded rounds.
+// The rounds (see rounds.hpp): the calling thread's loop, the threads that
+// run the lanes, and the shape of the recorded rounds.
 
 #include "parallel/rounds.hpp"
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <condition_variable>
 #include <mutex>
 #include <thread>
 
 #include "mesh/pool.hpp"
 #include "parallel/scheduler.hpp"
+#include "parallel/stopwatch.hpp"
 #include "parallel/worker.hpp"
 
 namespace gpdr::parallel {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double seconds(Clock::time_point a, Clock::time_point b) {
-    return std::chrono::duration<double>(b - a).count();
-}
 
 // What one leaf's run leaves for the master.
 struct RunResult {
@@ -108,36 +103,36 @@ public:
         if (wanted > 0) start_.notify_all();
         take_lanes(round, 0);
         if (wanted > 0) {
-            const auto t0 = Clock::now();
+            const Stopwatch clock;
             std::unique_lock lock(mutex_);
             done_.wait(lock, [&] { return finished_ == wanted_; });
-            times_[0].waiting += seconds(t0, Clock::now());
+            times_[0].waiting += clock.elapsed();
         }
     }
 
 private:
     void take_lanes(Round& round, unsigned thread) {
-        const auto t0 = Clock::now();
+        const Stopwatch clock;
         const auto lanes = static_cast<unsigned>(lanes_.size());
         for (;;) {
             const unsigned l = round.next_lane.fetch_add(1, std::memory_order_relaxed);
             if (l >= round.lanes_used) break;
             run_lane(*lanes_[l], l, lanes, round, mutex_, failure_);
         }
-        times_[thread].refining += seconds(t0, Clock::now());
+        times_[thread].refining += clock.elapsed();
     }
     void loop(unsigned thread) {
         std::uint64_t seen = 0;
         for (;;) {
             Round* round = nullptr;
             {
-                const auto t0 = Clock::now();
+                const Stopwatch clock;
                 std::unique_lock lock(mutex_);
                 // A helper takes part in a round only while fewer than
                 // `wanted_` have joined it.
                 start_.wait(lock,
                             [&] { return quit_ || (generation_ != seen && joined_ < wanted_); });
-                times_[thread].waiting += seconds(t0, Clock::now());
+                times_[thread].waiting += clock.elapsed();
                 if (quit_) return;
                 ++joined_;
                 seen = generation_;
@@ -168,13 +163,14 @@ private:
 }  // namespace
 
 void run_rounds(std::vector<std::unique_ptr<Worker>>& lanes, Scheduler& scheduler, unsigned threads,
-                const ParallelOptions& options, ParallelReport& report, std::exception_ptr& failure,
+                bool checked, ParallelReport& report, std::exception_ptr& failure,
                 const std::function<void()>& check) {
     const auto lane_total = static_cast<unsigned>(lanes.size());
     LaneThreads pool(lanes, std::min(threads, lane_total) - 1, failure, report.workers);
     Round round;
+    Stopwatch clock;
     for (;;) {
-        const auto t0 = Clock::now();
+        clock.lap();
         scheduler.plan_round(round.leaves);
         if (round.leaves.empty()) break;
         const std::size_t n = round.leaves.size();
@@ -194,11 +190,11 @@ void run_rounds(std::vector<std::unique_ptr<Worker>>& lanes, Scheduler& schedule
             lane.index = l;
             lanes[l]->pool().move_to_lane(lane);
         }
-        report.master.managing += seconds(t0, Clock::now());
+        report.master.managing += clock.lap();
 
         pool.run(round);
 
-        const auto t1 = Clock::now();
+        clock.lap();
         std::vector<std::uint64_t>& work = report.rounds.emplace_back(n);
         bool stopped = false;
         for (std::size_t i = 0; i < n; ++i) {
@@ -209,8 +205,8 @@ void run_rounds(std::vector<std::unique_ptr<Worker>>& lanes, Scheduler& schedule
             work[i] = r.work;
         }
         for (const auto& lane : lanes) stopped = stopped || lane->stopped;
-        if (options.checked) check();
-        report.master.managing += seconds(t1, Clock::now());
+        if (checked) check();
+        report.master.managing += clock.lap();
         if (stopped || failure) break;
     }
 }

@@ -1,28 +1,28 @@
 #pragma once
-// The deterministic schedule (ParallelOptions::deterministic): refinement in
-// bulk-synchronous ROUNDS, so that the mesh and its numbering are the same
-// for any number of threads and from run to run.
+// Parallel refinement in bulk-synchronous ROUNDS (schedule.hpp), so that
+// the mesh and its numbering are the same for any number of threads and
+// from run to run.
 //
 // Each round:
-//   1. The master chooses the round's leaves by a rule that reads the mesh
-//      and the quadtree alone (Scheduler::plan_round): every leaf with work
-//      in a fixed order, taken when its buffer zone is free of the zones
-//      taken before it.
+//   1. The calling thread chooses the round's leaves by a rule that reads
+//      the mesh and the quadtree alone (Scheduler::plan_round): every leaf
+//      with work in a fixed order, taken when its buffer zone is free of the
+//      zones taken before it.
 //   2. Leaf i of the round is refined on LANE i mod `lanes`, a worker with
 //      its own pool, queues and scratch (Worker), and a lane's leaves are
 //      refined in the round's order; threads take whole lanes, in any
 //      order, and any thread may run any lane.
-//   3. After the last lane, the master completes the leaves in the round's
-//      order: publishes their splits, frees their zones, delivers the work
-//      they routed to other leaves.
+//   3. After the last lane, the calling thread completes the leaves in the
+//      round's order: publishes their splits, frees their zones, delivers
+//      the work they routed to other leaves.
 // Why that gives the same mesh for any thread count: a leaf's run reads and
 // writes only its buffer zone (scheduler.hpp), which no other leaf of the
 // round shares, so it finds the same mesh whatever ran before it in the
 // round; its lane finds itself in the same state (the same leaves ran on it
 // before, in the same order); and a lane's pool hands out ids by a rule of
 // its own (mesh/pool.hpp: Lane), so even the ids, and with them the output's
-// numbering, do not depend on the threads.  Everything the master does
-// happens between rounds, in a fixed order.
+// numbering, do not depend on the threads.  Everything the calling thread
+// does between rounds happens in a fixed order.
 //
 // The number of lanes is fixed (lane_count), not the number of threads:
 // more threads than lanes would idle.
@@ -44,10 +44,10 @@ inline constexpr unsigned lane_count = 64;
 
 // Runs rounds until no leaf has work, a lane stops (a limit) or fails (its
 // exception goes to `failure`), on `threads` threads: the calling thread and
-// threads - 1 more.  `check` runs after each round in checked mode.
+// threads - 1 more.  `check` runs after each round when `checked`.
 // Records each round's leaves' work in report.rounds.
 void run_rounds(std::vector<std::unique_ptr<Worker>>& lanes, Scheduler& scheduler, unsigned threads,
-                const ParallelOptions& options, ParallelReport& report, std::exception_ptr& failure,
+                bool checked, ParallelReport& report, std::exception_ptr& failure,
                 const std::function<void()>& check);
 
 // What the recorded rounds say of the schedule's parallelism, counting a

@@ -1,4 +1,4 @@
-// The master's scheduling (see scheduler.hpp for the rule and its proof)
+// The rounds' scheduling (see scheduler.hpp for the rule and its proof)
 // and the checked mode's quadtree verification.
 
 #include "parallel/scheduler.hpp"
@@ -20,11 +20,10 @@ bool Scheduler::has_work(NodeId leaf) const {
     return n.state != nullptr && !n.state->work.idle();
 }
 
-// Subsegments to split first, anywhere (as refine_leaf's step 0 comes
-// first: a poor triangle whose Steiner point waits for a subsegment that
-// another leaf must split would otherwise be taken again and again), then
-// larger triangles first across the whole tree (Miller's order, as far as
-// leaves allow): the absolute size class of the leaf's lowest σ level.
+// Subsegments first, as refine_leaf's step 0 comes first: a poor triangle
+// whose Steiner point waits for a subsegment that another leaf must split
+// would otherwise be taken again and again.  Then the absolute size class
+// of the leaf's lowest σ level.
 long Scheduler::key(NodeId leaf) const {
     const Node& n = tree_.node(leaf);
     if (n.state->work.subsegment_entries() != 0) return long(n.level) - 4096;
@@ -33,21 +32,12 @@ long Scheduler::key(NodeId leaf) const {
 }
 
 void Scheduler::offer(NodeId leaf) {
-    // Every change to a leaf's work is followed by an offer; the leaf is
-    // queued again only when its key changed (the older entry goes stale).
-    // Rounds sort their candidates afresh: they wait unsorted, once each.
+    // Every change to a leaf's work is followed by an offer; the next round
+    // sorts its candidates afresh, so a leaf waits once, unsorted.
     Info& i = info(leaf);
     if (i.held || tree_.node(leaf).get_kind() != NodeKind::leaf || !has_work(leaf)) return;
-    if (rounds_) {
-        if (!i.queued) waiting_.push_back(leaf);
-        i.queued = true;
-        return;
-    }
-    const long k = key(leaf);
-    if (i.queued && i.queued_key == k) return;
+    if (!i.queued) waiting_.push_back(leaf);
     i.queued = true;
-    i.queued_key = k;
-    queue_.push({k, leaf});
 }
 
 void Scheduler::deliver(const Routed& r) {
@@ -75,62 +65,10 @@ void Scheduler::flush_inbox(NodeId leaf) {
     }
 }
 
-void Scheduler::park(long k, NodeId x, NodeId z) {
-    const std::int32_t holder = tree_.node(z).owner.load(std::memory_order_relaxed) - 1;
-    active_[static_cast<std::size_t>(holder)].parked.push_back({k, x});
-}
-
-NodeId Scheduler::assign(int entry, unsigned busy) {
-    if (active_.size() <= static_cast<std::size_t>(entry)) active_.resize(entry + 1);
-    if (serial_ && busy > 0) return no_node;
-    std::vector<std::pair<long, NodeId>> blocked;
-    NodeId chosen = no_node;
-    while (!queue_.empty()) {
-        const auto [k, x] = queue_.top();
-        queue_.pop();
-        Info& i = info(x);
-        if (!i.queued || i.queued_key != k)
-            continue;  // stale: the leaf was queued again with another key
-        if (tree_.node(x).get_kind() != NodeKind::leaf) {
-            i.queued = false;  // split since: its children were offered
-            continue;
-        }
-        if (i.held) {
-            park(k, x, x);  // (its work cannot be read now)
-            continue;
-        }
-        if (!has_work(x)) {
-            i.queued = false;
-            continue;
-        }
-        if (key(x) != k) {  // (cannot happen: every change is offered; kept cheap and safe)
-            i.queued_key = key(x);
-            blocked.push_back({i.queued_key, x});
-            continue;
-        }
-        const NodeId held =
-            tree_.zone_until(x, zone_scratch_, [&](NodeId z) { return info(z).held; });
-        if (held != no_node) {
-            park(k, x, held);
-            continue;
-        }
-        chosen = x;
-        break;
-    }
-    for (const auto& b : blocked) queue_.push(b);
-    if (chosen == no_node) return no_node;
-
-    hold(entry, chosen);
-    unsigned concurrent = 0;
-    for (const Active& b : active_) concurrent += b.leaf != no_node ? 1 : 0;
-    report_.most_concurrent = std::max(report_.most_concurrent, concurrent);
-    return chosen;
-}
-
 void Scheduler::hold(int entry, NodeId chosen) {
     if (checked_) {
         // Exclusivity, checked independently of the held flags: the new zone
-        // against every zone being refined.
+        // against every zone of the round so far.
         for (const Active& a : active_) {
             if (a.leaf == no_node) continue;
             for (NodeId z : zone_scratch_)
@@ -229,13 +167,6 @@ void Scheduler::plan_round(std::vector<NodeId>& round) {
     for (const Candidate& c : candidates) offer(c.leaf);
 }
 
-void Scheduler::move_assignment(int from, int to) {
-    if (active_.size() <= static_cast<std::size_t>(to)) active_.resize(to + 1);
-    active_[to] = std::move(active_[from]);
-    active_[from] = Active{};
-    for (NodeId z : active_[to].zone) tree_.node(z).owner.store(to + 1, std::memory_order_relaxed);
-}
-
 void Scheduler::publish_split(NodeId leaf) {
     // Children before the parent turns internal: a worker that sees
     // "internal" (acquire) finds the children's kinds set.
@@ -272,8 +203,6 @@ void Scheduler::complete(int entry, bool split, const std::vector<NodeId>& balan
     }
     a.leaf = no_node;
     a.zone.clear();
-    for (const auto& p : a.parked) queue_.push(p);
-    a.parked.clear();
     for (const Routed& r : outbox) deliver(r);
     outbox.clear();
     if (outgrew_root) serial_ = true;
@@ -342,15 +271,15 @@ void check_counted_or_deferred(const Quadtree& tree, std::uint32_t i, const mesh
         // room to spare, two or more levels above it.
         const DeferredIn& in = listed->second;
         const int k = tree.level_of(c.radius_squared);
-        if (counted || record == 0 || k < in.level + 2 ||
+        if (counted || !record.counted() || k < in.level + 2 ||
             !tree.disk_inside(tree.room(in.square), c.centre, c.radius_squared))
             problems.add(
                 fmt::format("triangle {} (level {}, tag {}) is deferred in leaf {} for level {}", i,
                             k, int(t.user_tag), in.leaf, in.level));
     } else if (!counted) {
-        if (record != 0)
+        if (record.counted())
             problems.add(fmt::format("triangle {} is neither counted nor deferred", i));
-    } else if (record == 0) {
+    } else if (!record.counted()) {
         problems.add(fmt::format("triangle {} is counted although too small to be", i));
     }
 }
@@ -358,20 +287,14 @@ void check_counted_or_deferred(const Quadtree& tree, std::uint32_t i, const mesh
 // A counted triangle adds one to the counter of each cell its record names.
 void expect_counts(Quadtree& tree, std::uint32_t i, CellRecord record,
                    std::unordered_map<NodeId, std::int32_t>& expected, QuadtreeProblems& problems) {
-    const int level = int((record >> 56) & 63u);
-    const unsigned mask = unsigned((record >> 52) & 15u);
-    const auto x0 = std::uint32_t((record >> 26) & ((1u << 26) - 1)),
-               y0 = std::uint32_t(record & ((1u << 26) - 1));
-    for (unsigned b = 0; b < 4; ++b) {
-        if (!(mask & (1u << b))) continue;
+    record.for_each_cell([&](std::uint32_t ix, std::uint32_t iy) {
         NodeId leaf;
-        const NodeId n =
-            tree.cell(Quadtree::root(), level, x0 + (b & 1u), y0 + (b >> 1), nullptr, leaf);
+        const NodeId n = tree.cell(Quadtree::root(), record.level(), ix, iy, nullptr, leaf);
         if (n == no_node)
             problems.add(fmt::format("triangle {}: its counter cell was never made", i));
         else
             ++expected[n];
-    }
+    });
 }
 
 // Relation (9), with effective sides, for every leaf the circumdisk of
@@ -444,7 +367,7 @@ void verify_quadtree(const mesh::Mesh& mesh, Quadtree& tree, std::vector<std::st
         const CellRecord record = cell_record(tree, c.centre, c.radius_squared, outgrew);
         const std::uint32_t i = mesh::index(id);
         check_counted_or_deferred(tree, i, t, c, record, deferred_in, found);
-        if (t.user_tag == counted_tag && record != 0)
+        if (t.user_tag == counted_tag && record.counted())
             expect_counts(tree, i, record, expected, found);
         check_relation_9(tree, i, c, stack, found);
     });

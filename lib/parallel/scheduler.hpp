@@ -1,13 +1,14 @@
 #pragma once
-// The master's scheduling decisions, in one place: which leaf a free worker
-// gets, and what happens when it returns (docs/architecture.md, "Parallel
-// refinement").
+// The rounds' scheduling decisions, in one place: which leaves a round
+// refines, and what happens when they return (docs/architecture.md,
+// "Parallel refinement").
 //
 // Buffer zones.  BUF(L) = { L' != L : dist(L, L') < (ℓe(L) + ℓe(L'))/2 },
 // Z(L) = {L} ∪ BUF(L) (quadtree.hpp for ℓe; ℓe = ℓ while relation (9)
 // holds).  A leaf is handed out only when no leaf of its zone is held, i.e.
-// when Z(L) ∩ Z(M) = ∅ for every leaf M being refined: the paper's "no leaf
-// in its buffer zone, nor in the buffer zones of those" (BUF is symmetric).
+// when Z(L) ∩ Z(M) = ∅ for every leaf M refined in the same round: the
+// paper's "no leaf in its buffer zone, nor in the buffer zones of those"
+// (BUF is symmetric).
 //
 // Why that is enough (the invariants the workers rely on):
 //   (a) Reach.  For p in L, every triangle t in p's cavity has p inside its
@@ -36,10 +37,9 @@
 //       read atomically, before anything else of a slot that another worker
 //       may be reusing is read (mesh/triangle.hpp).
 // A triangle larger than the root allows (never, while (9) holds for the
-// root) would void (a); the scheduler then hands out one leaf at a time.
+// root) would void (a); every round then refines one leaf.
 
 #include <cstdint>
-#include <queue>
 #include <string>
 #include <vector>
 
@@ -51,55 +51,40 @@ namespace gpdr::parallel {
 
 class Scheduler {
 public:
-    // `rounds`: the leaves are handed out by plan_round, not assign.
-    Scheduler(Quadtree& tree, ParallelReport& report, bool checked, bool rounds)
-        : tree_(tree), report_(report), checked_(checked), rounds_(rounds) {}
+    Scheduler(Quadtree& tree, ParallelReport& report, bool checked)
+        : tree_(tree), report_(report), checked_(checked) {}
 
-    // Queues a leaf that may have work (master thread only, leaf not held).
+    // Marks a leaf that may have work (calling thread only, leaf not held):
+    // the next round considers it.
     void offer(NodeId leaf);
-    // An ASSIGNMENT is a leaf handed out with its zone held, under an entry
-    // number the caller chooses among those not in use (a worker has a few:
-    // the leaf it refines and the next ones, handed out before it finishes).
-    // Node::owner of the zone's leaves is entry + 1 meanwhile: the tag the
-    // worker refines under.
-    //
-    // The next leaf for entry `entry`, its zone held; no_node if none can be
-    // handed out now (`busy`: the assignments not completed).
-    NodeId assign(int entry, unsigned busy);
-    // The deterministic schedule's choice instead (refine_parallel.cpp,
-    // run_rounds): one ROUND of leaves refined side by side.  Every leaf
-    // with work is looked at in a fixed order, the queue's key, then level,
+    // One ROUND of leaves refined side by side (rounds.hpp).  Every leaf
+    // with work is looked at in a fixed order, its key (below), then level,
     // then the cell's Morton code (never node ids: which thread made a node
     // decides its id), and taken when its zone shares no leaf with the
     // zones taken before it in this round.  The leaves, in that order, are
     // held under entries 0, 1, ... (`round` receives them; none when no
-    // leaf has work); the caller completes them in the same order once all
-    // have run.  So the rounds, and what each leaf finds, depend on the
-    // mesh alone, never on timing.
+    // leaf has work): Node::owner of the zone's leaves is entry + 1 while
+    // the round runs, the tag the lane refines under.  The caller completes
+    // them in the same order once all have run.  So the rounds, and what
+    // each leaf finds, depend on the mesh alone, never on timing.
     void plan_round(std::vector<NodeId>& round);
-    // The leaves of the zone of entry's assignment two or more levels above
-    // its leaf, handed over once: its worker splits those that are idle with
-    // a count of 0 when its run ends (Worker::run).
+    // The leaves of the zone of entry's leaf two or more levels above it,
+    // handed over once: the lane splits those that are idle with a count
+    // of 0 when its run ends (Worker::run).
     //
-    // Why.  A leaf without work is never handed out, so it never splits: a
+    // Why.  A leaf without work is never refined, so it never splits: a
     // large one (empty space between the domain and the root's sides, or a
     // finished region) stays large, and then it lies in the zone of every
-    // small leaf near it, so that no two of those can be refined at once.
-    // On a uniformly refined square (15 million triangles, -j2 -g4) the
-    // master re-examined some 110 blocked queue entries per assignment,
-    // scheduled for 0.8-1.6 s and left each worker waiting for about a
-    // second.  Split while they lie in a zone, such leaves shrink towards
-    // the size of the leaves being refined beside them: the master then
-    // scheduled for 0.18 s, and -j2 refined that square in 0.53-0.70x
-    // -j1's time instead of 0.77-0.89x (four interleaved rounds).
+    // small leaf near it, so that no two of those can be refined in one
+    // round.  Split while they lie in a zone, such leaves shrink towards
+    // the size of the leaves being refined beside them
+    // (docs/performance.md, "Parallel refinement").
     std::vector<NodeId> take_balance_candidates(int entry) {
         return std::move(active_[entry].balance);
     }
-    // The assignment of entry `from`, not started, moves to entry `to`.
-    void move_assignment(int from, int to);
-    // The worker refining entry's leaf returned it (split or not, and
-    // `balanced`: the balance candidates it split too): frees its zone, applies the
-    // splits, takes the work it routed out of its zone.
+    // The lane refining entry's leaf returned it (split or not, and
+    // `balanced`: the balance candidates it split too): frees its zone,
+    // applies the splits, takes the work it routed out of its zone.
     void complete(int entry, bool split, const std::vector<NodeId>& balanced,
                   std::vector<Routed>& outbox, bool outgrew_root);
     // Work for a leaf outside the sender's zone.
@@ -112,12 +97,6 @@ private:
     struct Active {
         NodeId leaf = no_node;
         std::vector<NodeId> zone;
-        // Queue entries found blocked by this zone: they go back to the
-        // queue when it is freed, and are not looked at (their zones not
-        // searched again) before.  Another zone may free first and make an
-        // entry assignable sooner; waiting for the one that blocked it only
-        // delays it.
-        std::vector<std::pair<long, NodeId>> parked;
         std::vector<NodeId> balance;  // until take_balance_candidates
     };
     // Whether a leaf touching x (beside one of its sides' midpoints or
@@ -126,28 +105,23 @@ private:
     // as many instructions; it settles most of the leaves a round passes
     // over, and the zone search the rest.
     bool touches_held(NodeId x);
-    // Hands out `chosen` under `entry`: holds its zone (zone_scratch_).
+    // Holds `chosen` under `entry`: its zone (zone_scratch_).
     void hold(int entry, NodeId chosen);
-    // Publishes a split its worker made: children first, then the parent.
+    // Publishes a split its lane made: children first, then the parent.
     void publish_split(NodeId leaf);
     Info& info(NodeId id) { return tree_.node(id).state->master; }
     bool has_work(NodeId leaf) const;
+    // Subsegments to split first, anywhere, then larger triangles first
+    // across the whole tree (Miller's order, as far as leaves allow).
     long key(NodeId leaf) const;
     void flush_inbox(NodeId leaf);
-    // Parks queue entry (k, x) with the assignment whose zone holds leaf z.
-    void park(long k, NodeId x, NodeId z);
 
     Quadtree& tree_;
     ParallelReport& report_;
     bool checked_;
     bool serial_ = false;
-    std::priority_queue<std::pair<long, NodeId>, std::vector<std::pair<long, NodeId>>,
-                        std::greater<>>
-        queue_;
     std::vector<Active> active_;  // by entry
-    // Rounds (plan_round) keep the leaves offered in `waiting_` instead of
-    // the queue, each once (MasterInfo::queued).
-    bool rounds_;
+    // The leaves offered since the last round, each once (MasterInfo::queued).
     std::vector<NodeId> waiting_;
     std::vector<NodeId> zone_scratch_;
 };

@@ -4,24 +4,17 @@
 #include "parallel/worker.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 
 #include "geometry/constructions.hpp"
 #include "mesh/traverse.hpp"
+#include "parallel/stopwatch.hpp"
 #include "refine/segments.hpp"
 
 namespace gpdr::parallel {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t) {
-    return std::chrono::duration<double>(Clock::now() - t).count();
-}
-
-constexpr std::uint64_t coordinate_mask = (std::uint64_t{1} << 26) - 1;
 
 bool finite(const Point& p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
@@ -30,12 +23,12 @@ bool finite(const Point& p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 CellRecord cell_record(const Quadtree& tree, const Point& centre, double radius_squared,
                        bool& outgrew_root) {
     const int k = tree.level_of(radius_squared);
-    if (k > max_level) return 0;  // too small to matter for any leaf we may make
+    if (k > max_level) return {};  // too small to matter for any leaf we may make
     if (k < 0) {
         // Larger than the root allows (cannot happen while relation (9)
         // holds for the root; the scheduler then runs one leaf at a time).
         outgrew_root = true;
-        return (std::uint64_t{1} << 63) | (std::uint64_t{1} << 52);
+        return {0, 1, 0, 0};
     }
     // The disk's diameter is below ℓ_k / 2, so its bounding box spans at
     // most 2 x 2 cells.  A cell beside the centre's (same row or column) is
@@ -57,26 +50,16 @@ CellRecord cell_record(const Quadtree& tree, const Point& centre, double radius_
                        r))
             mask |= 1u << diagonal;
     }
-    return (std::uint64_t{1} << 63) | (std::uint64_t(k) << 56) | (mask << 52) |
-           (std::uint64_t(x_lo) << 26) | std::uint64_t(y_lo);
+    return {k, static_cast<unsigned>(mask), x_lo, y_lo};
 }
 
-namespace {
-
-mesh::Pool make_pool(mesh::Mesh& mesh, const std::optional<mesh::Lane>& lane) {
-    if (lane) return mesh::Pool(mesh, *lane);
-    return mesh::Pool(mesh);
-}
-
-}  // namespace
-
-Worker::Worker(mesh::Mesh& mesh, refine::RefineRun& run, Quadtree& tree,
-               const ParallelOptions& options, const std::optional<mesh::Lane>& lane)
+Worker::Worker(mesh::Mesh& mesh, refine::RefineRun& run, Quadtree& tree, const mesh::Lane& lane,
+               bool checked)
     : mesh_(mesh),
       run_(run),
       tree_(tree),
-      options_(options),
-      pool_(make_pool(mesh, lane)),
+      checked_(checked),
+      pool_(mesh, lane),
       refiner_(run, pool_, report) {
     refiner_.set_observer(this);
 }
@@ -97,17 +80,12 @@ LeafState* Worker::new_leaf_state(NodeId leaf) {
 // ---- counters ------------------------------------------------------------------
 
 void Worker::apply(CellRecord record, int delta, bool check_zone) {
-    const int level = static_cast<int>((record >> 56) & 63u);
-    const unsigned mask = static_cast<unsigned>((record >> 52) & 15u);
-    const auto x0 = static_cast<std::uint32_t>((record >> 26) & coordinate_mask);
-    const auto y0 = static_cast<std::uint32_t>(record & coordinate_mask);
-    for (unsigned b = 0; b < 4; ++b) {
-        if (!(mask & (1u << b))) continue;
-        const std::uint32_t ix = x0 + (b & 1u), iy = y0 + (b >> 1);
+    const int level = record.level();
+    record.for_each_cell([&](std::uint32_t ix, std::uint32_t iy) {
         const std::uint64_t key = (std::uint64_t(level + 1) << 52) | (std::uint64_t(ix) << 26) | iy;
         CachedCell& cached = cache_[(key * 0x9E3779B97F4A7C15ull) >> 56];
         NodeId id = cached.node, leaf = no_node;
-        if (cached.key != key || (check_zone && options_.checked)) {
+        if (cached.key != key || (check_zone && checked_)) {
             // Start at the leaf being refined when the cell is inside it
             // (the common case: no walk from the root).
             NodeId start = Quadtree::root();
@@ -127,17 +105,17 @@ void Worker::apply(CellRecord record, int delta, bool check_zone) {
         } else {
             n.count.store(n.count.load(std::memory_order_relaxed) + delta,
                           std::memory_order_relaxed);
-            if (leaf != no_node && check_zone && options_.checked &&
+            if (leaf != no_node && check_zone && checked_ &&
                 tree_.node(leaf).owner.load(std::memory_order_relaxed) != tag_)
                 ++zone_escapes;
         }
-    }
+    });
 }
 
 void Worker::count(mesh::TriangleId t, const geometry::Circle& c) {
     const CellRecord record = cell_record(tree_, c.centre, c.radius_squared, outgrew_root);
     mesh::Triangle& r = mesh_.triangle(t);
-    if (record == 0) {
+    if (!record.counted()) {
         r.user_tag = 0;
         return;
     }
@@ -306,7 +284,7 @@ void Worker::route_triangle(refine::QueuedTriangle q, bool steiner_point_if_cent
     r.at = m.circle.centre;
     r.radius_squared = m.circle.radius_squared;
     r.shortest_squared = m.shortest.length_squared;
-    r.kind = refine::poor_kind(run_.quality(), m);
+    r.kind = refine::poor_kind(run_.order(), run_.quality(), m);
     // Classification routes by circumcentre, refinement by the Steiner
     // point f(t): a triangle handed off although its centre is inside was
     // handed off for its Steiner point, and one kept although its centre is
@@ -375,11 +353,10 @@ void Worker::split(NodeId leaf) {
 // four children are refined one after another), so a leaf there that
 // refined g levels before splitting would refine them alone; splitting as
 // soon as relation (9) allows hands that work down to levels where many
-// leaves share a round.  Graded pipe, -j2: at c = 1e-3 work / span 2.1 ->
-// 5.4 and refinement 0.85 times as long; at c = 1e-4 work / span 10.1 ->
-// 12.5 (docs/performance.md).  Only size-only triangles are bounded by it:
-// the window for triangles poor by their angle stays g-wide (Worker::run),
-// so a small mesh is still refined by the root alone, in -j1's order.
+// leaves share a round (docs/performance.md, "The rounds").  Only size-only
+// triangles are bounded by it: the window for triangles poor by their angle
+// stays g-wide (refine_window), so a small mesh is still refined by the
+// root alone, in -j1's order.
 int Worker::granularity_at(const Node& n) const {
     return std::min(static_cast<int>(run_.settings().granularity), static_cast<int>(n.level));
 }
@@ -403,54 +380,41 @@ bool Worker::should_split(const Node& n, LeafState& state) {
 }
 
 // A leaf whose count is not 0 cannot split: relation (9) would not hold for
-// its children.  Its window (Worker::run) takes the large triangles first and
-// leaves those below the window for the children it cannot have yet, where
-// Triangle's order takes the small ones near the input's features first;
-// the meshes grew by up to 22% at 20-30 degrees on a coastline of 100,000
-// segments (-j2 against -j1), and by up to 17 times at 34.  So while its count
-// is not 0, the leaf takes its triangles poor by their angle over all its
-// levels, in the leaf's order, checking the count after every
-// blocked_batch entries; then its run goes on as any other.  A leaf whose
-// count falls to 0 early (the initial triangulation's few large triangles
-// resolved) keeps its parallelism; one that stays blocked refines its part
-// of the mesh alone, in -j1's order (docs/refinement-order.md).  False when
-// a limit stopped refinement.
+// its children.  Its window (refine_window) would take the large triangles
+// first and leave those below the window for the children it cannot have
+// yet, where Triangle's order takes the small ones near the input's
+// features first, and the meshes would grow.  So while its count is not 0,
+// the leaf takes its triangles poor by their angle over all its levels, in
+// the leaf's order, checking the count after every blocked_batch entries
+// (refine/order.hpp, rule 4); then its run goes on as any other.  A leaf
+// whose count falls to 0 early (the initial triangulation's few large
+// triangles resolved) keeps its parallelism; one that stays blocked refines
+// its part of the mesh alone, in -j1's order.  False when a limit stopped
+// refinement.
 bool Worker::refine_while_blocked(const Node& n, LeafState& state) {
     for (;;) {
         sort_created();
         flush_pending();
         if (n.count.load(std::memory_order_relaxed) == 0) return true;
-        std::uint64_t takes_left = blocked_batch;
+        std::uint64_t takes_left = refine::blocked_batch;
         if (!refiner_.refine_levels(state.work, refine::Leaf::bucket_count - 1, -1, &takes_left))
             return false;
         if (takes_left != 0) return true;  // none left poor by its angle
     }
 }
 
-bool Worker::run(NodeId leaf, std::int32_t tag, const std::vector<NodeId>& balance) {
-    const auto t0 = Clock::now();
-    current_ = leaf;
-    current_targets_ = deferral_targets(leaf);
-    current_state_ = tree_.node(leaf).state;
-    tag_ = tag;
-    Node& n = tree_.node(leaf);
-    LeafState& state = *n.state;
-    // Fig. 4 on the levels of the leaf's own triangles, i_min .. 1 + g (the
-    // leaf splits once its work lies at 2 + g and below: should_split; g
-    // as granularity_at has it), and, for triangles poor by their angle,
-    // down to 1 + g + order_levels_beyond_split with the full g, all in the
-    // leaf's order (shortest edges first over all of them: leaf.hpp); then
-    // the split, if its work now belongs to its children.  Before the
-    // window, while the leaf's count keeps it from splitting, its triangles
-    // poor by their angle at every level (refine_while_blocked).  (Size-only
-    // triangles stay in the leaf's own levels, in the size bin up to 30
-    // degrees and in the size edge bins above (PoorKind): taking them four
-    // levels further made area-bound runs 1.2-1.6 times slower for the same
-    // counts up to 30 degrees, and kept the leaves from splitting at all
-    // above: flow -pq33a2e-4 refined as slowly on two threads as on one.)
+// Fig. 4 on the levels of the leaf's own triangles, i_min .. 1 + g (the
+// leaf splits once its work lies at 2 + g and below: should_split; g as
+// granularity_at has it), and, for triangles poor by their angle, down to
+// 1 + g + order_levels_beyond_split with the full g, all in the leaf's order
+// (refine/order.hpp, rule 3).  Before the window, while the leaf's count
+// keeps it from splitting, its triangles poor by their angle at every level
+// (rule 4: refine_while_blocked).  Returns whether the leaf should split
+// now that its work belongs to its children.
+bool Worker::refine_window(const Node& n, LeafState& state) {
     const int own_levels = 1 + granularity_at(n);
     const int last_level =
-        1 + static_cast<int>(run_.settings().granularity) + order_levels_beyond_split;
+        1 + static_cast<int>(run_.settings().granularity) + refine::order_levels_beyond_split;
     bool split_now = should_split(n, state);
     if (!split_now && !stopped && n.level < max_level && !state.work.idle()) {
         if (!refine_while_blocked(n, state)) {
@@ -470,21 +434,25 @@ bool Worker::run(NodeId leaf, std::int32_t tag, const std::vector<NodeId>& balan
     }
     sort_created();
     flush_pending();
-    const auto t1 = Clock::now();
-    times.refining += std::chrono::duration<double>(t1 - t0).count();
+    return split_now;
+}
 
-    // (Swapped with the worker's emptied lists: no allocation per run.)
+// The work the leaf handed off: to leaves of the zone, or to the outbox.
+// (Swapped with the worker's emptied lists: no allocation per run.)
+void Worker::route_handed_off(LeafState& state) {
     routing_triangles_.swap(state.work.handed_off_triangles);
     for (const auto& q : routing_triangles_) route_triangle(q, true, state.box, no_node);
     routing_triangles_.clear();
     routing_subsegments_.swap(state.work.handed_off_subsegments);
     for (const auto& s : routing_subsegments_) route_subsegment(s, no_node);
     routing_subsegments_.clear();
-    if (split_now) split(leaf);
-    // The zone's large idle leaves (see Scheduler::take_balance_candidates):
-    // the same split, allowed by the same rule (a count of 0 lets relation
-    // (9) hold for the children; the counts are exact now).  A leaf with
-    // work waits to be handed out instead.
+}
+
+// The zone's large idle leaves (see Scheduler::take_balance_candidates): the
+// same split, allowed by the same rule (a count of 0 lets relation (9) hold
+// for the children; the counts are exact now).  A leaf with work waits to
+// be refined instead.
+void Worker::split_balance_candidates(const std::vector<NodeId>& balance) {
     balanced.clear();
     for (const NodeId e : balance) {
         const Node& b = tree_.node(e);
@@ -494,9 +462,25 @@ bool Worker::run(NodeId leaf, std::int32_t tag, const std::vector<NodeId>& balan
         split(e);
         balanced.push_back(e);
     }
+}
+
+bool Worker::run(NodeId leaf, std::int32_t tag, const std::vector<NodeId>& balance) {
+    Stopwatch clock;
+    current_ = leaf;
+    current_targets_ = deferral_targets(leaf);
+    current_state_ = tree_.node(leaf).state;
+    tag_ = tag;
+    const Node& n = tree_.node(leaf);
+    LeafState& state = *n.state;
+    const bool split_now = refine_window(n, state);
+    times.refining += clock.lap();
+
+    route_handed_off(state);
+    if (split_now) split(leaf);
+    split_balance_candidates(balance);
     current_ = no_node;
     tag_ = 0;
-    times.managing += seconds_since(t1);
+    times.managing += clock.lap();
     return split_now;
 }
 

@@ -14,10 +14,10 @@
 
 #include <cstdint>
 #include <deque>
-#include <optional>
 #include <vector>
 
 #include "mesh/pool.hpp"
+#include "parallel/cell_record.hpp"
 #include "parallel/deferred_list.hpp"
 #include "parallel/quadtree.hpp"
 #include "parallel/refine_parallel.hpp"
@@ -56,14 +56,11 @@ inline void push(refine::Leaf& work, const Routed& r) {
     }
 }
 
-// The master's bookkeeping for a leaf (scheduler.hpp); no worker touches it.
+// The scheduler's bookkeeping for a leaf (scheduler.hpp), kept by the
+// calling thread between rounds; no lane touches it.
 struct MasterInfo {
-    bool held = false;  // in the zone of an assignment
-    // Whether the queue holds an entry for the leaf, and with which key
-    // (entries with another key are stale and dropped when popped): a leaf
-    // is queued once however often it is offered.
-    bool queued = false;
-    long queued_key = 0;
+    bool held = false;          // in the zone of a leaf of the round
+    bool queued = false;        // waiting for the next round (offered once)
     std::vector<Routed> inbox;  // work that arrived while it was held
 };
 
@@ -99,11 +96,6 @@ struct LeafState {
 // the cells its CellRecord names.
 inline constexpr std::uint8_t counted_tag = 1;
 
-// The cells a counted triangle is counted in: bit 63 set, level (6 bits)
-// << 56, cell mask (4 bits) << 52, ix << 26, iy (26 bits each); 0 for a
-// triangle too small to be counted.
-using CellRecord = std::uint64_t;
-
 // Computes the record of a triangle with this circumcircle (pure).  It is
 // not stored: a counted triangle that dies or flips is uncounted from its
 // corners as they were (mesh::TaggedTriangle), whose circumcircle, computed
@@ -114,10 +106,10 @@ CellRecord cell_record(const Quadtree& tree, const Point& centre, double radius_
 
 class Worker final : public refine::MeshObserver {
 public:
-    // With a lane, the worker's pool claims ids by the lane's rule (the
-    // deterministic schedule, rounds.hpp).
-    Worker(mesh::Mesh& mesh, refine::RefineRun& run, Quadtree& tree, const ParallelOptions& options,
-           const std::optional<mesh::Lane>& lane = std::nullopt);
+    // The worker's pool claims ids by the lane's rule (rounds.hpp).  In
+    // checked mode it also records counts it makes outside its zone.
+    Worker(mesh::Mesh& mesh, refine::RefineRun& run, Quadtree& tree, const mesh::Lane& lane,
+           bool checked);
 
     // Counts every live triangle (single-threaded, before refinement starts).
     void count_all();
@@ -239,13 +231,17 @@ private:
     void deliver(const Routed& r, NodeId splitting);
     bool should_split(const Node& n, LeafState& state);
     bool refine_while_blocked(const Node& n, LeafState& state);
+    // run()'s steps.
+    bool refine_window(const Node& n, LeafState& state);
+    void route_handed_off(LeafState& state);
+    void split_balance_candidates(const std::vector<NodeId>& balance);
     int granularity_at(const Node& n) const;
     void split(NodeId leaf);
 
     mesh::Mesh& mesh_;
     refine::RefineRun& run_;
     Quadtree& tree_;
-    const ParallelOptions& options_;
+    bool checked_;
     mesh::Pool pool_;
     refine::LeafRefiner refiner_;
     NodeAllocator nodes_;

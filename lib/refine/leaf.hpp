@@ -1,32 +1,21 @@
 #pragma once
 // Leaf: the unit of refinement work (GPDR paper §3, Fig. 4).  A leaf owns
 //   - its poor triangles, in slots ordered by (level, bin), taken lowest
-//     first (see "The order" below);
+//     first (see the order below);
 //   - the queue of subsegments to split (encroached, or in the way of a
 //     Steiner point).
 // Entries carry the triangle's generation; an entry whose triangle died
 // since (or whose slot holds another triangle now) is stale and skipped when
 // popped: nothing is ever searched for and removed.
 //
-// The order (docs/refinement-order.md).  The size of the mesh above 25
-// degrees depends mostly on the order in which poor triangles are split,
-// and the order that gives the smallest meshes is Triangle's: shortest edge
-// first.  The key of a triangle is the squared length of its shortest edge
-// l², in bins a factor √2 wide (edge_bin), the bin of the shortest edges
-// first, and first-in-first-out within a bin (a triangle whose split was
-// put off goes back to the tail of its bin).  Triangles that are poor only
-// by size (area bound or user test, no bad angle) wait, up to 30 degrees
-// (QualityTest::stacks_size_only), in a separate
-// last-in-first-out bin after every other bin of their level, the size
-// bin: the newest was just made and is still in the cache.  (Taking them
-// by their edges' bins instead made the refinement of the graded pipe and
-// of a square under -a alone about 1.3 times slower.)  The triangles one
-// insertion makes are pushed shortest edge last (LeafRefiner::
-// queue_size_only), so that the bin takes them shortest first, and the
-// meshes are as small as the edge bins' (docs/refinement-order.md).  Above
-// 30 degrees they wait by their shortest edge like the others (PoorKind::
-// size_edges): in a flat leaf, in the same edge bins; in a quadtree leaf,
-// in size edge bins of their own, taken in the same order as the edge bins
+// The order is refine/order.hpp's: the slots carry it out.  The key of a
+// triangle is the squared length of its shortest edge l², in bins a factor
+// √2 wide (edge_bin), the bin of the shortest edges first, first in, first
+// out within a bin.  Triangles poor only by size wait, where the rules let
+// them (PoorKind::size), in a last-in-first-out size bin after every other
+// bin of their level; where not, by their shortest edge (PoorKind::
+// size_edges): in a flat leaf in the same edge bins, in a quadtree leaf in
+// size edge bins of their own, taken in the same order as the edge bins
 // but only within the leaf's own levels, as the size bin is.
 //
 // A flat leaf (the sequential refiner, Leaf::flat) has no σ levels: its
@@ -64,6 +53,7 @@
 
 #include "geometry/point.hpp"
 #include "mesh/ids.hpp"
+#include "refine/order.hpp"
 
 namespace gpdr::refine {
 
@@ -102,21 +92,6 @@ struct QueuedSubsegment {
 struct PoorSlot {
     int level = 0;
     int bin = 0;
-};
-
-// How a poor triangle waits (Leaf::slot).
-enum class PoorKind : std::uint8_t {
-    angle,  // poor by its angle: by its shortest edge, in the edge bins
-    // Poor only by size (area bound, user test), where they may wait apart
-    // (QualityTest::stacks_size_only): the size bin, last in, first out.
-    size,
-    // Poor only by size, where they may not: by the shortest edge like the
-    // others.  A flat leaf files them in the edge bins; a quadtree leaf in
-    // size edge bins of their own, which its runs take in the same order
-    // as the edge bins but only within the leaf's own levels (first_slot's
-    // last_size_level), so that the size of the mesh does not hold a leaf
-    // back from splitting.
-    size_edges,
 };
 
 class Leaf {

@@ -100,29 +100,6 @@ public:
                m.circle.radius_squared > rho_bar_squared_ * m.shortest.length_squared;
     }
 
-    // Whether triangles poor only by size may wait apart from the others,
-    // last in, first out (Leaf's size bin), rather than by their shortest
-    // edge: without an angle bound, or with one of 30 degrees or less
-    // (rho_bar >= 1).  Above 30 degrees the order of the size-only triangles
-    // decides the mesh as much as the others': with -a too, the stack made
-    // meshes 1.06 times Triangle's order at 32 degrees and up to 3.8 times
-    // at 34 on one thread, and two threads met the safety stop
-    // (docs/refinement-order.md); up to 30 degrees, 0.4-2.6% larger.
-    bool stacks_size_only() const { return !angle_test_ || rho_bar_ >= size_stack_rho_bar; }
-    // 1 / (2 sin 30°) = 1, less a rounding margin.
-    static constexpr double size_stack_rho_bar = 0.999;
-    // Whether the size-only triangles one insertion makes are queued
-    // shortest edge first (LeafRefiner::queue_size_only): without an angle
-    // bound, or with one of 26 degrees or less.  There the meshes come
-    // within 0.0-0.3% of the edge bins' (0.4-0.7% with the plain stack); from
-    // 27 to 30 degrees both ways give 1-2.6% more, and sorting 0.2-0.5% more
-    // than the plain stack (sums over the generated models;
-    // docs/refinement-order.md).
-    bool sorts_size_only() const {
-        return !angle_test_ || criteria_.min_angle_degrees <= size_sort_max_angle;
-    }
-    static constexpr double size_sort_max_angle = 26.0;
-
 private:
     QualityCriteria criteria_;
     SegmentEnds segments_;

@@ -103,6 +103,7 @@ RefineRun::RefineRun(const mesh::Mesh& mesh, const RefineSettings& settings)
                                                        : own_steiner_used_),
       settings_(settings),
       quality_(settings_.criteria, SegmentEnds{settings_.segment_ends}),
+      order_(order_rules(quality_)),
       strategy_(settings_.strategy != nullptr ? settings_.strategy
                                               : &builtin_placement(settings_.placement)) {
     double min_x = std::numeric_limits<double>::infinity(), max_x = -min_x, min_y = min_x,
@@ -200,7 +201,7 @@ void LeafRefiner::classify_created(Leaf& leaf) {
     report_.triangles_created += buffer_.created.size();
     if (observer_ != nullptr) observer_->tagged_triangles_gone(buffer_.tagged_gone);
     buffer_.tagged_gone.clear();  // (told once)
-    holding_size_only_ = quality_.sorts_size_only();
+    holding_size_only_ = run_.order().sort_size_only;
     for (TriangleId id : buffer_.created) {
         const mesh::Triangle& r = mesh_.triangle(id);
         const TriangleMeasures m =
@@ -215,11 +216,8 @@ void LeafRefiner::classify_created(Leaf& leaf) {
 // The size bin is last in, first out: the triangles one insertion made
 // would be taken newest first, in the order the cavity's walk happened to
 // list them.  Queued with the longest shortest edge first, they are taken
-// shortest first, as Triangle's edge bins would take them.  With -a or -u
-// alone or up to 26 degrees (QualityTest::sorts_size_only) that brings the
-// meshes from 0.4-0.7% above the edge bins' to 0.0-0.3% (sums over the
-// generated models), for 0-9% more refinement time than the plain stack
-// on one thread, where the edge bins cost 30% (docs/refinement-order.md).
+// shortest first, as Triangle's edge bins would take them (order.hpp, rule
+// 2: with -a or -u alone or up to 26 degrees, OrderRules::sort_size_only).
 void LeafRefiner::queue_size_only(Leaf& leaf) {
     if (size_only_.empty()) return;
     // Equal edges keep the order they were made in (the sort is stable).

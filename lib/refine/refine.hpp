@@ -72,6 +72,7 @@
 #include "mesh/mesh.hpp"
 #include "mesh/pool.hpp"
 #include "refine/leaf.hpp"
+#include "refine/order.hpp"
 #include "refine/placement.hpp"
 #include "refine/quality.hpp"
 
@@ -102,8 +103,9 @@ struct RefineSettings {
     // Input segment ends by SubsegmentInfo::segment, 2 per segment (optional;
     // speeds up the small-angle rule, see segments.hpp).
     std::span<const mesh::VertexId> segment_ends;
-    // Levels refined per refine_leaf call beyond i_min (Fig. 4's g).
-    unsigned granularity = 1;
+    // Levels refined per refine_leaf call beyond i_min (Fig. 4's g; a flat
+    // leaf's order does not depend on it).
+    unsigned granularity = default_granularity;
 };
 
 struct RefineReport {
@@ -137,6 +139,7 @@ public:
 
     const RefineSettings& settings() const { return settings_; }
     const QualityTest& quality() const { return quality_; }
+    const OrderRules& order() const { return order_; }
     const PlacementStrategy& strategy() const { return *strategy_; }
     double tiny_length_squared() const { return tiny_length_squared_; }
     std::uint64_t safety_limit() const { return safety_limit_; }
@@ -149,6 +152,7 @@ private:
     std::atomic<std::uint64_t> own_steiner_used_{0};
     RefineSettings settings_;
     QualityTest quality_;
+    OrderRules order_;
     const PlacementStrategy* strategy_;
     double tiny_length_squared_ = 0;
     std::uint64_t safety_limit_ = 0;
@@ -168,15 +172,6 @@ public:
     virtual void triangle_created(mesh::TriangleId t, std::uint32_t generation,
                                   const geometry::Circle& circumcircle) = 0;
 };
-
-// How a poor triangle with measures m waits in a leaf (Leaf::slot): by
-// its shortest edge if poor by its angle; else, poor only by size, in its
-// level's size bin where the order of such triangles may differ from the
-// others' (QualityTest::stacks_size_only), by its shortest edge where not.
-inline PoorKind poor_kind(const QualityTest& quality, const TriangleMeasures& m) {
-    if (quality.bad_shape(m)) return PoorKind::angle;
-    return quality.stacks_size_only() ? PoorKind::size : PoorKind::size_edges;
-}
 
 // One thread's refiner: owns the pool, insertion buffer and scratch.
 class LeafRefiner {
@@ -236,7 +231,7 @@ private:
     void split_instead(Leaf& leaf, QueuedTriangle q, PoorSlot at, mesh::EdgeRef e);
     void split_queued_then_requeue(Leaf& leaf, QueuedTriangle q, PoorSlot at);
     bool alive(QueuedTriangle q) const;
-    PoorKind kind(const TriangleMeasures& m) const { return poor_kind(quality_, m); }
+    PoorKind kind(const TriangleMeasures& m) const { return poor_kind(run_.order(), quality_, m); }
     bool split_subsegment(Leaf& leaf, mesh::EdgeRef e);
     bool may_split(mesh::EdgeRef e) const;
     bool budget_left();

@@ -146,7 +146,7 @@ const Reference references[] = {
     {"coastline", 34, 1192.8, 8072},
     {"@pipe", 33, 40, 13230},
     // The same from 31 to 33 degrees, where two threads refine in the
-    // quadtree (parallel::max_quadtree_angle).
+    // quadtree (refine::max_quadtree_angle).
     {"@flow", 33, 0.075, 9250},
     {"channel", 33, 0.1, 6658},
     {"coastline", 33, 1192.8, 6602},
@@ -201,7 +201,7 @@ TEST_CASE("two threads' meshes stay near one thread's", "[api][refine][order]") 
         // (Above max_quadtree_angle every thread count runs the sequential
         // refiner: "above 33 degrees every thread count writes one thread's
         // mesh".)
-        if (ref.angle == 0 || ref.angle > parallel::max_quadtree_angle) continue;
+        if (ref.angle == 0 || ref.angle > refine::max_quadtree_angle) continue;
         const Refined one = refine_file(reference_file(ref), ref.angle, ref.area, 1);
         const Refined two = refine_file(reference_file(ref), ref.angle, ref.area, 2);
         const double ratio = double(triangle_count(two.mesh)) / double(triangle_count(one.mesh));

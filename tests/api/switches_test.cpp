@@ -291,6 +291,12 @@ TEST_CASE("parse_switches rejects what Triangle would misread", "[api][switches]
         {"-", "standard input"},
         {"-threads", "did you mean --threads?"},
         {"-version", "did you mean --version?"},
+        // Every long option gets suggested (gpdr::long_option_names; -svg
+        // is -s -v -g, three switches).
+        {"-vtk", "did you mean --vtk?"},
+        {"-gmsh", "did you mean --gmsh?"},
+        {"-force", "did you mean --force?"},
+        {"-unsuitable", "did you mean --unsuitable?"},
         {"-placement", "--placement"},
         {"-q70", "-q70"},
         {"-q60", "below 60"},

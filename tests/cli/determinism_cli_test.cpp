@@ -142,5 +142,39 @@ TEST_CASE("with -V, gpdr says which refiner an angle bound gets", "[cli][determi
         const bool sequential = std::stod(angle) > 33.0;
         CHECK((result.out.find(one_thread) != std::string::npos) == sequential);
         CHECK((result.out.find("rounds refining") != std::string::npos) == !sequential);
+        if (sequential)
+            CHECK(result.out.find("the angle bound is above 33 degrees") != std::string::npos);
+        else
+            CHECK(result.out.find("Refinement in rounds over the quadtree on 2 threads") !=
+                  std::string::npos);
     }
+}
+
+TEST_CASE("with -V, gpdr says why a run refines on one thread", "[cli][determinism]") {
+    const fs::path input = source_dir() / "poly-samples" / "flow.poly";
+    const std::pair<const char*, const char*> cases[] = {
+        {"-pVq30a0.01 -j1", "Refinement on one thread, in Triangle's order: -j1"},
+        {"-pVq30a0.01S100 -j2", "Refinement on one thread, in Triangle's order: -S"},
+    };
+    for (const auto& [switches, said] : cases) {
+        INFO(switches);
+        TempDir dir;
+        fs::copy_file(input, dir / "flow.poly");
+        const RunResult result = run_gpdr(dir, std::string(switches) + " flow.poly");
+        INFO(result.err);
+        REQUIRE(result.status == 0);
+        CHECK(result.out.find(said) != std::string::npos);
+        CHECK(result.out.find("rounds refining") == std::string::npos);
+    }
+}
+
+TEST_CASE("gpdr refuses --nondeterministic: every thread count writes the same files",
+          "[cli][determinism]") {
+    TempDir dir;
+    fs::copy_file(source_dir() / "poly-samples" / "flow.poly", dir / "flow.poly");
+    const RunResult result = run_gpdr(dir, "-pq30 --nondeterministic flow.poly");
+    CHECK(result.status == 1);
+    CHECK(result.err.find("it writes the same files for every thread count from 2 up") !=
+          std::string::npos);
+    CHECK(dir.files() == std::vector<std::string>{"flow.poly"});
 }

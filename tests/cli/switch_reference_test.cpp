@@ -8,7 +8,7 @@
 // cluster "-k": k is a switch unless the parser calls it an unknown switch.
 // A switch works bare when "-k" parses, and takes a number when "-k2" parses
 // as well and k does not stop the reading (as h does: "-h" followed by
-// anything parses).  The long options are gpdr::app::long_option_names, the
+// anything parses).  The long options are gpdr::long_option_names, the
 // table the command line checks every "--name" against; each is also run
 // through the built gpdr, which must know it, and which says whether it needs
 // a value.
@@ -105,7 +105,7 @@ const std::map<std::string, bool>& parser_long_options() {
     static const std::map<std::string, bool> options = [] {
         std::map<std::string, bool> result;
         TempDir dir;
-        for (const std::string_view name_view : gpdr::app::long_option_names) {
+        for (const std::string_view name_view : gpdr::long_option_names) {
             const std::string name(name_view);
             const auto r = run_gpdr(dir, name);
             INFO("gpdr " << name << " printed: " << r.err);

@@ -46,10 +46,8 @@ TEST_CASE("parallel refinement speed on a large square", "[.bench][parallel]") {
             std::getenv("GPDR_BENCH_REPEAT") ? std::atoi(std::getenv("GPDR_BENCH_REPEAT")) : 3;
         for (int repeat = 0; repeat < repeats; ++repeat) {
             mesh::Mesh m = refine::testing::cdt(p);
-            ParallelOptions o;
-            o.threads = c.threads;
-            o.granularity = c.g;
-            o.one_leaf_for_one_thread = c.one_leaf;
+            const Schedule o = c.one_leaf ? Schedule::sequential(Schedule::Why::one_thread, c.g)
+                                          : Schedule::rounds(c.threads, c.g);
             ParallelReport run;
             const auto t0 = std::chrono::steady_clock::now();
             refine_parallel(m, s, o, run);

@@ -1,4 +1,4 @@
-// The deterministic schedule (parallel/rounds.hpp): the refined mesh, down
+// The rounds (parallel/rounds.hpp): the refined mesh, down
 // to its vertex ids, triangle slots and their generations, is the same for
 // any number of threads and from run to run; and the rounds it records
 // measure the work they claim.  Run under ThreadSanitizer too
@@ -95,9 +95,8 @@ mesh::Mesh start(const Case& c) {
 }
 
 ParallelReport refine_on(mesh::Mesh& m, const Case& c, unsigned threads) {
-    ParallelOptions o;
-    o.threads = threads;
-    o.granularity = c.granularity;
+    Schedule o =
+        Schedule::rounds(threads, c.granularity != 0 ? c.granularity : refine::default_granularity);
     o.checked = threads == 3;  // the quadtree verified after every round, once per case
     ParallelReport report;
     refine_parallel(m, c.settings, o, report);
@@ -108,7 +107,7 @@ ParallelReport refine_on(mesh::Mesh& m, const Case& c, unsigned threads) {
 
 }  // namespace
 
-TEST_CASE("the deterministic schedule gives the same mesh, ids and all, on any number of threads",
+TEST_CASE("the rounds give the same mesh, ids and all, on any number of threads",
           "[parallel][determinism]") {
     for (const Case& c : cases()) {
         INFO(c.name);
@@ -130,28 +129,6 @@ TEST_CASE("the deterministic schedule gives the same mesh, ids and all, on any n
     }
 }
 
-TEST_CASE("the schedule handing leaves out as threads come free still refines validly",
-          "[parallel][determinism]") {
-    // (--nondeterministic: its mesh depends on timing, its bounds do not.)
-    for (const Case& c : cases()) {
-        INFO(c.name);
-        mesh::Mesh m = start(c);
-        ParallelOptions o;
-        o.threads = 3;
-        o.granularity = c.granularity;
-        o.deterministic = false;
-        o.checked = true;
-        ParallelReport report;
-        refine_parallel(m, c.settings, o, report);
-        INFO(joined(report.problems));
-        CHECK(report.problems.empty());
-        CHECK(report.rounds.empty());
-        const auto outcome = examine(m, c.settings);
-        CHECK(outcome.bad_angles == 0);
-        CHECK(outcome.too_big == 0);
-    }
-}
-
 TEST_CASE("the recorded rounds measure the work they claim", "[parallel][determinism]") {
     // A graded unit square: much work near one corner, little elsewhere.
     triangulate::Pslg p;
@@ -160,9 +137,7 @@ TEST_CASE("the recorded rounds measure the work they claim", "[parallel][determi
     refine::RefineSettings s = settings_for(20, 0);
     s.criteria.user_test = graded;
     mesh::Mesh m = cdt(p);
-    ParallelOptions o;
-    o.threads = 2;
-    o.granularity = 2;
+    const Schedule o = Schedule::rounds(2, 2);
     ParallelReport report;
     refine_parallel(m, s, o, report);
     REQUIRE(report.rounds.size() > 2);
@@ -223,8 +198,7 @@ TEST_CASE("a round's lanes claim ids side by side, so one long run keeps them de
     }
     mesh::Mesh m = cdt(p);
     const std::uint64_t before = m.triangle_end();
-    ParallelOptions o;
-    o.threads = 2;
+    const Schedule o = Schedule::rounds(2);
     ParallelReport report;
     refine::RefineSettings s = settings_for(30, 0);
     s.checked = false;

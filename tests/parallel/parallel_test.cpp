@@ -27,9 +27,7 @@ struct Result {
 
 Result refine_checked(mesh::Mesh& m, const refine::RefineSettings& s, unsigned threads, unsigned g,
                       bool checked, ParallelReport* out = nullptr) {
-    ParallelOptions o;
-    o.threads = threads;
-    o.granularity = g;
+    Schedule o = Schedule::rounds(threads, g != 0 ? g : refine::default_granularity);
     o.checked = checked;
     ParallelReport report;
     refine_parallel(m, s, o, report);
@@ -113,8 +111,7 @@ TEST_CASE("the Steiner limit stops every worker with a valid mesh", "[parallel]"
     auto s = settings_for(30, 1e-4);
     s.steiner_limit = true;
     s.max_steiner = 500;
-    ParallelOptions o;
-    o.threads = 3;
+    const Schedule o = Schedule::rounds(3);
     ParallelReport report;
     refine_parallel(m, s, o, report);
     CHECK(report.refine.stopped == refine::RefineReport::Stop::steiner_limit);
@@ -131,7 +128,7 @@ TEST_CASE("timing report has one entry per worker and the API defaults", "[paral
     ParallelReport report;
     refine_parallel(m, settings_for(20, 1e-3), 2, 0, report);
     CHECK(report.threads == 2);
-    CHECK(report.granularity == default_granularity);
+    CHECK(report.granularity == refine::default_granularity);
     REQUIRE(report.workers.size() == 2);
     CHECK(report.workers[0].refining + report.workers[1].refining > 0);
     CHECK(report.assignments > 0);

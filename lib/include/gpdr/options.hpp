@@ -62,10 +62,6 @@ struct Options {
     // --force: refine even when the mesh the area bounds call for is
     // estimated to need more memory than is available.
     bool force = false;
-    // --nondeterministic: the parallel schedule that hands leaves out as
-    // threads come free, whose mesh depends on their timing (by default the
-    // mesh is the same for any -jN with N >= 2).
-    bool nondeterministic = false;
     // Files for other programs (gpdr/mesh_formats.hpp): --vtk (.vtu),
     // --gmsh (.msh), --svg (a picture of the mesh).
     bool write_vtk = false;

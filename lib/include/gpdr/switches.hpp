@@ -5,6 +5,7 @@
 // unknown letter is an error, q/a numbers may carry an exponent, and -jN,
 // -gN, -PN are gpdr's own numbered switches.
 
+#include <array>
 #include <string_view>
 
 #include <gpdr/options.hpp>
@@ -32,6 +33,28 @@ enum class SwitchDialect { program, library };
 // -P other than 0, 1, 2).
 void parse_switches(std::string_view cluster, Options& options,
                     SwitchDialect dialect = SwitchDialect::program);
+
+// gpdr's long options, the only "--name" arguments the program accepts (it
+// declares each to its option parser, apps/gpdr/command_line.cpp); a
+// cluster that looks like one of them typed with one dash ("-threads") gets
+// it suggested.  gpdr -h and man/gpdr.1 document each one
+// (tests/cli/switch_reference_test.cpp).
+inline constexpr std::array<std::string_view, 10> long_option_names = {
+    "--threads", "--granularity", "--placement", "--unsuitable", "--force",
+    "--vtk",     "--gmsh",        "--svg",       "--help",       "--version"};
+
+// Long options gpdr refuses with a reason of their own rather than as
+// unknown ones.
+struct RefusedOption {
+    std::string_view name;
+    std::string_view reason;
+};
+inline constexpr std::array<RefusedOption, 1> refused_long_options = {{
+    {"--nondeterministic",
+     "--nondeterministic: gpdr has no schedule that depends on the threads' timing; it writes "
+     "the same files for every thread count from 2 up (and -j1 refines on one thread, in "
+     "Triangle's order)"},
+}};
 
 // A placement strategy by name ("circumcentre", "off-centre",
 // "optimisation", American spellings too) or number ("0", "1", "2"), as

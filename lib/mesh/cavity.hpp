@@ -1,9 +1,10 @@
 #pragma once
-// The Bowyer-Watson cavity search and the walk around its boundary, shared
-// by point insertion (insert.cpp) and subsegment splitting
-// (split_subsegment.cpp).  Templates, so that each caller's rule for which
-// triangles may join, and what it does with each boundary edge, compile into
-// the loop (the search is the hottest code of refinement).
+// The Bowyer-Watson cavity search, the walk around its boundary and the fan
+// of new triangles that fills it, shared by point insertion (insert.cpp)
+// and subsegment splitting (split_subsegment.cpp).  Templates, so that each
+// caller's rule for which triangles may join, what it does with each
+// boundary edge and what it adds to each new triangle compile into the loop
+// (insertion is the hottest code of refinement).
 //
 // The search marks the cavity triangles (Triangle::mark_bit) and lists them
 // in buffer.killed; the caller clears the marks (commit or abandon).
@@ -87,6 +88,38 @@ bool walk_cavity_boundary(const Mesh& mesh, const InsertBuffer& buffer, std::siz
         e = EdgeRef(ct, j);
     } while (e != start && walked <= boundary_edges);
     return walked == boundary_edges && e == start;
+}
+
+// Fills the cavity, once its triangles are destroyed, with a fan around the
+// new vertex v: one triangle per edge of buffer.boundary (in order round the
+// cavity), from edge `first` on, with the edge as edge 2 and v at corner 2,
+// linked across the edge to the outer triangle and across edges 0 and 1 to
+// the triangles after and before it.  The fan closes into a ring unless
+// `open`: then the edge before `first`, a hull edge through v, stays out.
+// Edge 2 keeps the boundary edge's subsegment flag; dress(t, b) adds what
+// else the caller's triangle t, made from boundary edge b, carries (its
+// region, flags of its other edges).  buffer.created lists the fan in order.
+template <class Dress>
+void fan_cavity(Pool& pool, InsertBuffer& buffer, std::size_t first, bool open, VertexId v,
+                Dress&& dress) {
+    Mesh& mesh = pool.mesh();
+    const auto& boundary = buffer.boundary;
+    const std::size_t m = boundary.size();
+    const std::size_t count = open ? m - 1 : m;
+    buffer.created.clear();
+    TriangleId previous = no_triangle;
+    for (std::size_t i = 0; i < count; ++i) {
+        const InsertBuffer::BoundaryEdge& b = boundary[(first + i) % m];
+        const TriangleId id = pool.create(b.from, b.to, v);
+        Triangle& t = mesh.triangle(id);
+        if (b.subsegment) t.set_subsegment(2, true);
+        dress(t, b);
+        mesh.link(EdgeRef(id, 2), b.outer);
+        if (previous != no_triangle) mesh.link(EdgeRef(previous, 0), EdgeRef(id, 1));
+        buffer.created.push_back(id);
+        previous = id;
+    }
+    if (!open) mesh.link(EdgeRef(previous, 0), EdgeRef(buffer.created.front(), 1));
 }
 
 }  // namespace gpdr::mesh

@@ -80,7 +80,6 @@ InsertResult commit_cavity(Pool& pool, VertexId v, const LocateResult& where, In
     auto& cavity = buf.killed;
     auto& boundary = buf.boundary;
     boundary.clear();
-    buf.created.clear();
     const std::size_t boundary_edges = buf.boundary_edges;
     const TriangleId seed = where.triangle;
 
@@ -105,33 +104,20 @@ InsertResult commit_cavity(Pool& pool, VertexId v, const LocateResult& where, In
         clear_marks(mesh, cavity);
         boundary.clear();
         cavity.clear();
+        buf.created.clear();
         throw InternalError(
             "mesh: Bowyer-Watson cavity is not simply connected (the mesh is not Delaunay near the "
             "point)");
     }
 
-    // Step 4b: kill the cavity, then fan the boundary from v.  Slots freed
-    // here are the first the pool hands out again.
+    // Step 4b: kill the cavity, then fan the boundary from v (after the
+    // skipped hull edge, if any).  Slots freed here are the first the pool
+    // hands out again.  The new triangles take the seed's region.
     const std::uint16_t region = mesh.triangle(seed).region;
     save_tagged_and_destroy(pool, buf);
-
-    const std::size_t m = boundary.size();
     const bool open = !skip.is_none();
-    const std::size_t first = open ? skip_at + 1 : 0;
-    const std::size_t count = open ? m - 1 : m;
-    TriangleId previous = no_triangle;
-    for (std::size_t i = 0; i < count; ++i) {
-        const auto& b = boundary[(first + i) % m];
-        const TriangleId id = pool.create(b.from, b.to, v);
-        Triangle& t = mesh.triangle(id);
-        t.region = region;
-        if (b.subsegment) t.set_subsegment(2, true);
-        mesh.link(EdgeRef(id, 2), b.outer);
-        if (previous != no_triangle) mesh.link(EdgeRef(previous, 0), EdgeRef(id, 1));
-        buf.created.push_back(id);
-        previous = id;
-    }
-    if (!open) mesh.link(EdgeRef(previous, 0), EdgeRef(buf.created.front(), 1));
+    fan_cavity(pool, buf, open ? skip_at + 1 : 0, open, v,
+               [region](Triangle& t, const InsertBuffer::BoundaryEdge&) { t.region = region; });
     return {InsertStatus::inserted, v, EdgeRef::none()};
 }
 

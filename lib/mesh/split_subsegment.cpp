@@ -199,30 +199,15 @@ std::size_t fan_start(const std::vector<InsertBuffer::BoundaryEdge>& boundary, V
 // `first` on, into buf.created (v at corner 2): x-v and v-y become
 // subsegments, triangles on t1's side take region1, those past x region2.
 // `open`: the hull edge x -> y is on the boundary and stays out.
-void fan_cavity(Pool& pool, InsertBuffer& buf, std::size_t first, bool open, VertexId x, VertexId y,
-                VertexId v, std::uint16_t region1, std::uint16_t region2) {
-    Mesh& mesh = pool.mesh();
-    const auto& boundary = buf.boundary;
-    const std::size_t m = boundary.size();
-    const std::size_t count = open ? m - 1 : m;
-    buf.created.clear();
+void fan_split(Pool& pool, InsertBuffer& buf, std::size_t first, bool open, VertexId x, VertexId y,
+               VertexId v, std::uint16_t region1, std::uint16_t region2) {
     bool other_side = false;
-    TriangleId previous = no_triangle;
-    for (std::size_t i = 0; i < count; ++i) {
-        const auto& b = boundary[(first + i) % m];
+    fan_cavity(pool, buf, first, open, v, [&](Triangle& t, const InsertBuffer::BoundaryEdge& b) {
         if (b.from == x) other_side = true;
-        const TriangleId id = pool.create(b.from, b.to, v);
-        Triangle& t = mesh.triangle(id);
         t.region = other_side ? region2 : region1;
-        if (b.subsegment) t.set_subsegment(2, true);
         if (b.to == x || b.to == y) t.set_subsegment(0, true);
         if (b.from == x || b.from == y) t.set_subsegment(1, true);
-        mesh.link(EdgeRef(id, 2), b.outer);
-        if (previous != no_triangle) mesh.link(EdgeRef(previous, 0), EdgeRef(id, 1));
-        buf.created.push_back(id);
-        previous = id;
-    }
-    if (!open) mesh.link(EdgeRef(previous, 0), EdgeRef(buf.created.front(), 1));
+    });
 }
 
 }  // namespace
@@ -250,7 +235,7 @@ InsertResult split_subsegment(Pool& pool, EdgeRef s, const Point& asked, VertexK
     if (const SubsegmentInfo* found = mesh.subsegments().find(x, y)) info = *found;
     const VertexId v = pool.new_vertex(p, kind);
     save_tagged_and_destroy(pool, buf);
-    fan_cavity(pool, buf, first, across.is_none(), x, y, v, region1, region2);
+    fan_split(pool, buf, first, across.is_none(), x, y, v, region1, region2);
     if (orient2d(mesh.point(x), mesh.point(y), p) != 0) lawson_flips(mesh, buf);
 
     mesh.subsegments().erase(x, y);

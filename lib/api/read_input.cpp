@@ -32,8 +32,10 @@ Input read_input(const Options& options, const FileNames& names, const WarningSi
         in.content_hash = io::hash_number(in.content_hash, ele.content_hash);
         if (options.poly) {
             // The .poly of a mesh written by gpdr or Triangle has no vertices
-            // of its own (count 0): they come from the .node just read again.
-            auto poly = io::read_poly(names.in_poly, warn, default_base);
+            // of its own (count 0): they are those of the .node just read,
+            // which is not read twice (a pipe could not be).
+            const io::KnownNodes known{in.nodes.data.size(), in.nodes.base, in.nodes.content_hash};
+            auto poly = io::read_poly(names.in_poly, warn, default_base, &known);
             poly.data.nodes = {};
             in.poly_file = names.in_poly;
             in.poly = std::move(poly.data);

@@ -107,83 +107,112 @@ ReadResult<NodeSet> read_node(const std::string& path, const WarningSink& warn, 
     return read_node_impl(path, {}, warn, default_base);
 }
 
-ReadResult<PolyFile> read_poly(const std::string& path, const WarningSink& warn, int default_base) {
-    TextReader in(path);
-    ReadResult<PolyFile> r;
+namespace {
+
+// The .poly's vertices: its own list, or with a vertex count of 0
+// (Triangle's convention) those of the .node beside it, read here unless
+// the caller has them (`known`).  Sets r's base and starts its content hash.
+void read_poly_vertices(TextReader& in, const std::string& path, const WarningSink& warn,
+                        int default_base, const KnownNodes* known, ReadResult<PolyFile>& r,
+                        std::size_t& vertex_count) {
     PolyFile& poly = r.data;
-
     const NodeHeader h = read_node_header(in);
-    if (h.count == 0) {
-        // Triangle's convention: the vertices live in the .node file beside it.
-        const std::string node_path = node_file_for(path);
-        auto nodes = read_node_impl(
-            node_path,
-            fmt::format("{} line {} has vertex count 0, which takes the vertices from {}", path,
-                        h.line, node_path),
-            warn, default_base);
-        poly.nodes = std::move(nodes.data);
-        poly.nodes_from_node_file = true;
-        r.base = nodes.base;
-        r.content_hash = nodes.content_hash;
-    } else {
+    if (h.count != 0) {
         poly.nodes = read_vertices(in, h, default_base, r.base, warn);
+        vertex_count = poly.nodes.size();
+        return;
     }
-    const std::size_t vertex_count = poly.nodes.size();
+    poly.nodes_from_node_file = true;
+    if (known != nullptr) {
+        r.base = known->base;
+        r.content_hash = known->content_hash;
+        vertex_count = known->count;
+        return;
+    }
+    const std::string node_path = node_file_for(path);
+    auto nodes = read_node_impl(
+        node_path,
+        fmt::format("{} line {} has vertex count 0, which takes the vertices from {}", path, h.line,
+                    node_path),
+        warn, default_base);
+    poly.nodes = std::move(nodes.data);
+    r.base = nodes.base;
+    r.content_hash = nodes.content_hash;
+    vertex_count = poly.nodes.size();
+}
 
-    // Segments: "<#segments> <#markers>", then "<i> <a> <b> [marker]".
+// Segments: "<#segments> <#markers>", then "<i> <a> <b> [marker]".
+void read_poly_segments(TextReader& in, int base, std::size_t vertex_count, const WarningSink& warn,
+                        SegmentSet& segments) {
     if (!in.next_line())
         in.fail("expected the segment header '<#segments> <#markers>', found the end of the file");
-    const std::size_t segment_count = in.count("segment count");
-    const bool segment_markers = detail::marker_count(in, "segment marker count");
-    const std::size_t expect = in.reserve_hint(segment_count, 6);
-    poly.segments.endpoints.reserve(2 * expect);
-    if (segment_markers) poly.segments.markers.reserve(expect);
-    IdChecker segment_ids("segment", r.base);
-    for (std::size_t k = 0; k < segment_count; ++k) {
-        if (!in.next_line())
-            in.fail(fmt::format("expected {} segments, found {}", segment_count, k));
-        segment_ids.check(in, in.integer("segment number"), k, warn);
-        const auto a = detail::vertex_index(in, r.base, vertex_count, "segment endpoint");
-        const auto b = detail::vertex_index(in, r.base, vertex_count, "segment endpoint");
+    const std::size_t count = in.count("segment count");
+    const bool markers = detail::marker_count(in, "segment marker count");
+    const std::size_t expect = in.reserve_hint(count, 6);
+    segments.endpoints.reserve(2 * expect);
+    if (markers) segments.markers.reserve(expect);
+    IdChecker ids("segment", base);
+    for (std::size_t k = 0; k < count; ++k) {
+        if (!in.next_line()) in.fail(fmt::format("expected {} segments, found {}", count, k));
+        ids.check(in, in.integer("segment number"), k, warn);
+        const auto a = detail::vertex_index(in, base, vertex_count, "segment endpoint");
+        const auto b = detail::vertex_index(in, base, vertex_count, "segment endpoint");
         if (a == b)
             in.warn(warn, fmt::format("segment with both endpoints at vertex {}",
-                                      static_cast<std::int64_t>(a) + r.base));
-        poly.segments.endpoints.push_back(a);
-        poly.segments.endpoints.push_back(b);
-        if (segment_markers) poly.segments.markers.push_back(detail::marker(in, "segment marker"));
+                                      static_cast<std::int64_t>(a) + base));
+        segments.endpoints.push_back(a);
+        segments.endpoints.push_back(b);
+        if (markers) segments.markers.push_back(detail::marker(in, "segment marker"));
     }
+}
 
-    // Holes: "<#holes>", then "<i> <x> <y>".
+// Holes: "<#holes>", then "<i> <x> <y>".
+void read_poly_holes(TextReader& in, int base, const WarningSink& warn,
+                     std::vector<double>& holes) {
     if (!in.next_line()) in.fail("expected the number of holes, found the end of the file");
-    const std::size_t hole_count = in.count("hole count", 6);
-    poly.holes.reserve(2 * in.reserve_hint(hole_count, 6));
-    IdChecker hole_ids("hole", r.base);
-    for (std::size_t k = 0; k < hole_count; ++k) {
-        if (!in.next_line()) in.fail(fmt::format("expected {} holes, found {}", hole_count, k));
-        hole_ids.check(in, in.integer("hole number"), k, warn);
-        poly.holes.push_back(in.real("hole x coordinate"));
-        poly.holes.push_back(in.real("hole y coordinate"));
+    const std::size_t count = in.count("hole count", 6);
+    holes.reserve(2 * in.reserve_hint(count, 6));
+    IdChecker ids("hole", base);
+    for (std::size_t k = 0; k < count; ++k) {
+        if (!in.next_line()) in.fail(fmt::format("expected {} holes, found {}", count, k));
+        ids.check(in, in.integer("hole number"), k, warn);
+        holes.push_back(in.real("hole x coordinate"));
+        holes.push_back(in.real("hole y coordinate"));
     }
+}
 
-    // Regions (optional): "<#regions>", then "<i> <x> <y> <attribute> <max area>".
-    if (in.next_line()) {
-        const std::size_t region_count = in.count("region count", 8);
-        poly.regions.reserve(in.reserve_hint(region_count, 8));
-        IdChecker region_ids("region", r.base);
-        for (std::size_t k = 0; k < region_count; ++k) {
-            if (!in.next_line())
-                in.fail(fmt::format("expected {} regions, found {}", region_count, k));
-            region_ids.check(in, in.integer("region number"), k, warn);
-            Region reg;
-            reg.x = in.real("region x coordinate");
-            reg.y = in.real("region y coordinate");
-            reg.attribute = in.real("region attribute");
-            // One value after x y: Triangle uses it for both attribute and area bound.
-            reg.max_area = in.real_or(reg.attribute, "region maximum area");
-            poly.regions.push_back(reg);
-        }
-        if (in.next_line()) in.warn(warn, "data after the region list is ignored");
+// Regions (optional): "<#regions>", then "<i> <x> <y> <attribute> <max area>".
+void read_poly_regions(TextReader& in, int base, const WarningSink& warn,
+                       std::vector<Region>& regions) {
+    if (!in.next_line()) return;
+    const std::size_t count = in.count("region count", 8);
+    regions.reserve(in.reserve_hint(count, 8));
+    IdChecker ids("region", base);
+    for (std::size_t k = 0; k < count; ++k) {
+        if (!in.next_line()) in.fail(fmt::format("expected {} regions, found {}", count, k));
+        ids.check(in, in.integer("region number"), k, warn);
+        Region reg;
+        reg.x = in.real("region x coordinate");
+        reg.y = in.real("region y coordinate");
+        reg.attribute = in.real("region attribute");
+        // One value after x y: Triangle uses it for both attribute and area bound.
+        reg.max_area = in.real_or(reg.attribute, "region maximum area");
+        regions.push_back(reg);
     }
+    if (in.next_line()) in.warn(warn, "data after the region list is ignored");
+}
+
+}  // namespace
+
+ReadResult<PolyFile> read_poly(const std::string& path, const WarningSink& warn, int default_base,
+                               const KnownNodes* known) {
+    TextReader in(path);
+    ReadResult<PolyFile> r;
+    std::size_t vertex_count = 0;
+    read_poly_vertices(in, path, warn, default_base, known, r, vertex_count);
+    read_poly_segments(in, r.base, vertex_count, warn, r.data.segments);
+    read_poly_holes(in, r.base, warn, r.data.holes);
+    read_poly_regions(in, r.base, warn, r.data.regions);
     r.content_hash = hash_number(r.content_hash, in.finish());
     return r;
 }

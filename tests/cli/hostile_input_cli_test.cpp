@@ -116,3 +116,30 @@ TEST_CASE("a .node or .poly through a fifo meshes into the same files", "[cli][h
         }
     }
 }
+
+TEST_CASE("a mesh refined with -rp reads its .node once, so it may come through a fifo",
+          "[cli][hostile]") {
+    // The .poly of a mesh has vertex count 0: its vertices are the .node's,
+    // which a fifo can give only once.
+    TempDir first;
+    fs::copy_file(project_samples() / "flow.poly", first / "box.poly");
+    REQUIRE(run_gpdr(first, "-Qpq box.poly").status == 0);
+    const std::vector<std::string> inputs = {"box.1.node", "box.1.ele", "box.1.poly"};
+    TempDir file_dir, fifo_dir;
+    for (const std::string& name : inputs) {
+        fs::copy_file(first / name, file_dir / name);
+        REQUIRE(feed_fifo(fifo_dir / name, file_dir / name, 10));
+    }
+    const auto from_file = run_gpdr(file_dir, "-rpq30 box.1");
+    // (Under timeout: a second open of the fifo would wait for a writer
+    // that never comes.)
+    const auto from_fifo =
+        run_program(fifo_dir, "timeout", std::string("30 '") + GPDR_EXE + "' -rpq30 box.1");
+    INFO("stderr: " << from_file.err << from_fifo.err);
+    REQUIRE(from_file.status == 0);
+    REQUIRE(from_fifo.status == 0);
+    for (const std::string name : {"box.2.node", "box.2.ele", "box.2.poly"}) {
+        INFO(name);
+        CHECK(fifo_dir.read(name) == file_dir.read(name));
+    }
+}

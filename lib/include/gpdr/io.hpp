@@ -44,13 +44,23 @@ struct ReadResult {
 ReadResult<NodeSet> read_node(const std::string& path, const WarningSink& warn,
                               int default_base = 1);
 
+// The vertices of a .node its caller has read already: their count, the
+// base and the content hash read_node() gave.
+struct KnownNodes {
+    std::size_t count = 0;
+    int base = 1;
+    std::uint64_t content_hash = 0;
+};
+
 // A .poly file.  When its vertex count is 0 the vertices come from the .node
 // file of the same base name (box.poly -> box.node), which this reader loads
 // into data.nodes (data.nodes_from_node_file is then true); `base` is then the
-// base of that .node file.  Segment endpoints are validated against the
-// vertices and the base.
+// base of that .node file.  With `known`, that .node is not read again (it
+// may be a pipe, which can be read only once): data.nodes stays empty, and
+// the base and hash are known's.  Segment endpoints are validated against
+// the vertices and the base.
 ReadResult<PolyFile> read_poly(const std::string& path, const WarningSink& warn,
-                               int default_base = 1);
+                               int default_base = 1, const KnownNodes* known = nullptr);
 
 // An .ele file of a mesh whose vertices (vertex_count of them) number from
 // `base`.  Corners out of [base, base + vertex_count) are an InputError.

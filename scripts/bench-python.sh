@@ -1,7 +1,6 @@
 #!/usr/bin/env bash
 # gpdr's Python module against the triangle package (Triangle 1.6 inside a
-# Cython wrapper), on the same inputs, each measurement in a fresh
-# interpreter:
+# Cython wrapper), on the same inputs:
 #
 #   TRIANGLE_PY=path/to/triangle-checkout scripts/bench-python.sh
 #
@@ -20,19 +19,26 @@
 # regenerate it from core.pyx): Triangle's code is never built or kept in
 # this repository.
 #
+# Times: one interpreter per input imports both modules and calls them in
+# turn, REPEATS times (default 5); the table gives each one's fastest call
+# and the median of the REPEATS ratios of neighbouring calls, so that a
+# change of the machine's load mid-run touches both sides of a ratio alike.
+# The threads table alternates in a row, threads at once and processes at
+# once the same way.  Peak memory: a fresh interpreter per module and input,
+# one call (ru_maxrss; "call" is the growth over the peak before the call).
+#
 # Environment: GPDR_PYTHONPATH (default build/python: the module assembled
 # by `cmake --build build --target gpdr_python`), PYTHON (default
-# /usr/bin/python3), BENCH_DIR (default /tmp/gpdr-bench), REPEATS (default 3:
-# the fastest of REPEATS runs is shown, each module's runs alternating),
-# POINTS (default 1000000), PIPE_SWITCHES (default pq20a0.01).
-# Figures are for comparing as ratios within one run of the script: these
-# machines are small and noisy.
+# /usr/bin/python3), BENCH_DIR (default /tmp/gpdr-bench), REPEATS, POINTS
+# (default 1000000), PIPE_SWITCHES (default pq20a0.01).  Figures are for
+# comparing as ratios within one run of the script: these machines are
+# small and noisy.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 python=${PYTHON:-/usr/bin/python3}
 bench_dir=${BENCH_DIR:-/tmp/gpdr-bench}
 gpdr_path=${GPDR_PYTHONPATH:-$root/build/python}
-repeats=${REPEATS:-3}
+repeats=${REPEATS:-5}
 points=${POINTS:-1000000}
 pipe_switches=${PIPE_SWITCHES:-pq20a0.01}
 
@@ -71,7 +77,7 @@ if ! ls "$package"/triangle/core*.so >/dev/null 2>&1; then
 fi
 
 # The pipe as arrays, read once with gpdr's reader, so that both modules
-# start from the same numpy arrays and neither process imports the other.
+# start from the same numpy arrays.
 pipe="$bench_dir/pipe.npz"
 PYTHONPATH="$gpdr_path" "$python" - "$root/poly-samples" "$pipe" <<'PY'
 import sys
@@ -83,143 +89,162 @@ PY
 
 driver="$bench_dir/bench_python.py"
 cat >"$driver" <<'PY'
-"""One measurement: python bench_python.py MODULE CASE ARG; prints
-'seconds peak_MiB call_MiB triangles'."""
+"""The measurements of scripts/bench-python.sh:
+
+  time INPUT OPTS REPEATS         both modules in turn: 'triangle_s gpdr_s median_ratio triangles'
+  memory MODULE INPUT OPTS        one call: 'peak_MiB call_MiB'
+  threads MODULE POINTS REPEATS   'row_s threads_s processes_s threads/row processes/row'
+
+INPUT is a number of random points or a .npz file of arrays.  gpdr runs
+with threads=1 throughout.
+"""
+import importlib
+import multiprocessing
 import resource
+import statistics
 import sys
 import threading
 import time
 
 import numpy as np
 
-module, case, arg = sys.argv[1:4]
-if module == "gpdr":
-    import gpdr as m
-    extras = {"threads": 1}
-else:
-    import triangle as m
-    extras = {}
 
-
-def peak_mib():
-    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+def load(name):
+    module = importlib.import_module(name)
+    extras = {"threads": 1} if name == "gpdr" else {}
+    return lambda tri, opts="": module.triangulate(tri, opts, **extras)
 
 
 def random_points(seed, count):
     return np.random.default_rng(seed).random((count, 2))
 
 
-if case in ("random", "pipe"):
-    if case == "random":
-        tri, opts = {"vertices": random_points(1, int(arg))}, sys.argv[4]
-    else:
-        tri, opts = dict(np.load(arg)), sys.argv[4]
-    before = peak_mib()
+def read_input(spec):
+    if spec.endswith(".npz"):
+        return dict(np.load(spec))
+    return {"vertices": random_points(1, int(spec))}
+
+
+def peak_mib():
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+
+
+def timed(call, *args):
     start = time.perf_counter()
-    mesh = m.triangulate(tri, opts, **extras)
-    seconds = time.perf_counter() - start
-    count = len(mesh["triangles"])
-elif case == "processes":  # the machine's own floor: two processes at once
-    import multiprocessing as mp
+    result = call(*args)
+    return time.perf_counter() - start, result
 
-    def child(seed, barrier, times):
-        tri = {"vertices": random_points(seed, int(arg))}
-        barrier.wait()
-        began = time.perf_counter()  # CLOCK_MONOTONIC: one clock for every process
-        mesh = m.triangulate(tri, "", **extras)
-        times.put((began, time.perf_counter(), len(mesh["triangles"])))
 
-    context = mp.get_context("fork")
-    barrier, times = context.Barrier(2), context.Queue()
-    children = [context.Process(target=child, args=(seed, barrier, times)) for seed in (1, 2)]
+def measure_time(spec, opts, repeats):
+    tri = read_input(spec)
+    meshers = {name: load(name) for name in ("triangle", "gpdr")}
+    times = {name: [] for name in meshers}
+    for r in range(repeats):
+        order = ("triangle", "gpdr") if r % 2 == 0 else ("gpdr", "triangle")
+        for name in order:
+            seconds, mesh = timed(meshers[name], tri, opts)
+            times[name].append(seconds)
+            count = len(mesh["triangles"])
+            del mesh
+    ratios = [g / t for g, t in zip(times["gpdr"], times["triangle"])]
+    print(f"{min(times['triangle']):.3f} {min(times['gpdr']):.3f} "
+          f"{statistics.median(ratios):.2f} {count}")
+
+
+def measure_memory(name, spec, opts):
+    mesh = load(name)
+    tri = read_input(spec)
     before = peak_mib()
-    for c in children:
-        c.start()
-    spans = [times.get() for _ in children]
-    for c in children:
-        c.join()
-    seconds = max(s[1] for s in spans) - min(s[0] for s in spans)
-    count = sum(s[2] for s in spans)
-else:  # "together" or "in-a-row": two sets of points in two Python threads
-    sets = [random_points(seed, int(arg)) for seed in (1, 2)]
-    results = [None, None]
+    result = mesh(tri, opts)
+    print(f"{peak_mib():.0f} {peak_mib() - before:.0f}")
 
-    def run(i):
-        results[i] = m.triangulate({"vertices": sets[i]}, "", **extras)
 
-    before = peak_mib()
-    start = time.perf_counter()
-    if case == "together":
-        workers = [threading.Thread(target=run, args=(i,)) for i in range(2)]
+def measure_threads(name, count, repeats):
+    mesh = load(name)
+    sets = [random_points(seed, count) for seed in (1, 2)]
+
+    def in_a_row():
+        for points in sets:
+            mesh({"vertices": points})
+
+    def threads_at_once():
+        workers = [threading.Thread(target=mesh, args=({"vertices": p},)) for p in sets]
         for w in workers:
             w.start()
         for w in workers:
             w.join()
+
+    def child(points, barrier, spans):
+        barrier.wait()
+        start = time.perf_counter()  # CLOCK_MONOTONIC: one clock for every process
+        mesh({"vertices": points})
+        spans.put((start, time.perf_counter()))
+
+    def processes_at_once():
+        context = multiprocessing.get_context("fork")
+        barrier, spans = context.Barrier(2), context.Queue()
+        children = [context.Process(target=child, args=(p, barrier, spans)) for p in sets]
+        for c in children:
+            c.start()
+        got = [spans.get() for _ in children]
+        for c in children:
+            c.join()
+        return max(end for _, end in got) - min(start for start, _ in got)
+
+    rows, together, apart = [], [], []
+    for _ in range(repeats):
+        rows.append(timed(in_a_row)[0])
+        together.append(timed(threads_at_once)[0])
+        apart.append(processes_at_once())
+    print(f"{min(rows):.3f} {min(together):.3f} {min(apart):.3f} "
+          f"{statistics.median(t / r for t, r in zip(together, rows)):.2f} "
+          f"{statistics.median(p / r for p, r in zip(apart, rows)):.2f}")
+
+
+if __name__ == "__main__":
+    what, args = sys.argv[1], sys.argv[2:]
+    if what == "time":
+        measure_time(args[0], args[1], int(args[2]))
+    elif what == "memory":
+        measure_memory(args[0], args[1], args[2])
     else:
-        run(0)
-        run(1)
-    seconds = time.perf_counter() - start
-    count = sum(len(r["triangles"]) for r in results)
-print(f"{seconds:.3f} {peak_mib():.0f} {peak_mib() - before:.0f} {count}")
+        measure_threads(args[0], int(args[1]), int(args[2]))
 PY
 
-# measure MODULE CASE ARG [OPTS]: the fastest of $repeats runs, as
-# "seconds peak_MiB call_MiB triangles".
-declare -A best
-measure_all() {
-  local key=$1
-  shift
-  local module line
-  for ((r = 0; r < repeats; r++)); do
-    for module in triangle gpdr; do
-      local path="$package"
-      [ "$module" = gpdr ] && path="$gpdr_path"
-      line=$(PYTHONPATH="$path" "$python" "$driver" "$module" "$@" 2>"$bench_dir/driver.log") || {
-        echo "bench-python: $module $*: $(tail -1 "$bench_dir/driver.log")" >&2
-        line="- - - -"
-      }
-      local old=${best[$key,$module]:-}
-      if [ -z "$old" ] || awk -v a="${line%% *}" -v b="${old%% *}" 'BEGIN { exit !(a < b) }'; then
-        best[$key,$module]=$line
-      fi
-    done
-  done
+# run [ARG ...]: the driver with both modules importable.
+run() {
+  PYTHONPATH="$package:$gpdr_path" "$python" "$driver" "$@" 2>"$bench_dir/driver.log" || {
+    echo "bench-python: $*: $(tail -1 "$bench_dir/driver.log")" >&2
+    echo "- - - - -"
+  }
 }
 
-ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (a + 0 > 0 && b + 0 > 0) printf "%.2f", a / b; else print "-" }'; }
-
 echo "gpdr module $(PYTHONPATH="$gpdr_path" "$python" -c 'import gpdr; print(gpdr.__version__)')" \
-  "(threads=1) against the triangle package; fastest of $repeats runs each"
+  "(threads=1) against the triangle package; $repeats calls each, in turn"
 echo
 echo "| input | opts | triangles | triangle s | gpdr s | gpdr / triangle | triangle peak MiB | gpdr peak MiB | triangle call MiB | gpdr call MiB |"
 echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|"
 row() {
-  local key=$1 label=$2 opts=$3
-  read -r ts tp tc tn <<<"${best[$key,triangle]}"
-  read -r gs gp gc gn <<<"${best[$key,gpdr]}"
-  echo "| $label | '$opts' | $gn | $ts | $gs | $(ratio "$gs" "$ts") | $tp | $gp | $tc | $gc |"
+  local label=$1 spec=$2 opts=$3 ts gs ratio count tp tc gp gc
+  read -r ts gs ratio count <<<"$(run time "$spec" "$opts" "$repeats")"
+  read -r tp tc <<<"$(run memory triangle "$spec" "$opts")"
+  read -r gp gc <<<"$(run memory gpdr "$spec" "$opts")"
+  echo "| $label | '$opts' | $count | $ts | $gs | $ratio | $tp | $gp | $tc | $gc |"
 }
-measure_all delaunay random "$points" ""
-row delaunay "$points random points" ""
-measure_all quality random "$points" "q"
-row quality "$points random points" "q"
-measure_all pipe pipe "$pipe" "$pipe_switches"
-row pipe "pipe.poly" "$pipe_switches"
+row "$points random points" "$points" ""
+row "$points random points" "$points" "q"
+row "pipe.poly" "$pipe" "$pipe_switches"
 
 echo
 echo "Two Python threads, each meshing its own $points random points with '':"
 echo
-echo "| module | in a row s | threads at once s | threads / in a row | processes at once s | processes / in a row | peak MiB, threads at once |"
-echo "|---|---:|---:|---:|---:|---:|---:|"
-measure_all row in-a-row "$points"
-measure_all together together "$points"
-measure_all processes processes "$points"
+echo "| module | in a row s | threads at once s | threads / in a row | processes at once s | processes / in a row |"
+echo "|---|---:|---:|---:|---:|---:|"
 for module in triangle gpdr; do
-  read -r rs _ _ _ <<<"${best[row,$module]}"
-  read -r ts tp _ _ <<<"${best[together,$module]}"
-  read -r ps _ _ _ <<<"${best[processes,$module]}"
-  echo "| $module | $rs | $ts | $(ratio "$ts" "$rs") | $ps | $(ratio "$ps" "$rs") | $tp |"
+  read -r rs ts ps tr pr <<<"$(run threads "$module" "$points" "$repeats")"
+  echo "| $module | $rs | $ts | $tr | $ps | $pr |"
 done
 echo
+echo "Times: each side's fastest call; ratios: the median of neighbouring calls' ratios."
 echo "Processes at once: the same two calls in two processes, the machine's own floor"
 echo "(shared cores, caches and memory bandwidth) under any two-thread speed-up."

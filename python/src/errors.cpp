@@ -41,6 +41,9 @@ void translate(std::exception_ptr failure) {
             (std::string(e.what()) + " (an internal error in gpdr: please report it)").c_str());
     } catch (const ResourceError& e) {
         PyErr_SetString(PyExc_MemoryError, e.what());
+    } catch (const CapacityError& e) {
+        // More ids than gpdr's 32-bit ids hold: as a result past int32 indices.
+        PyErr_SetString(PyExc_OverflowError, e.what());
     } catch (const InputError& e) {
         // The caller's arrays are not a file: the reason alone names the entry.
         PyErr_SetString(error_type, e.file() == input_name ? e.reason().c_str() : e.what());

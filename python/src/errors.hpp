@@ -4,6 +4,7 @@
 //
 //   gpdr::InputError, UsageError, GeometryError ...  -> gpdr.Error (a ValueError)
 //   gpdr::ResourceError (the memory check refuses)   -> MemoryError
+//   gpdr::CapacityError (past gpdr's 32-bit ids)     -> OverflowError
 //   gpdr::InternalError (a bug in gpdr)              -> RuntimeError
 //   std::bad_alloc                                   -> MemoryError (pybind11's own)
 //   -C findings                                      -> gpdr.CheckError (a RuntimeError)

@@ -115,6 +115,86 @@ private:
     std::vector<std::function<void()>> copies_, sets_;
 };
 
+// A 0-based vertex or triangle index as the structures number it, from
+// `base`; "none" (a hull side's neighbour) is -1.
+struct Numbered {
+    int base;
+    int operator()(std::uint32_t v) const {
+        return v == NeighbourSet::none ? -1 : static_cast<int>(v) + base;
+    }
+};
+
+// The vertices (unless N): coordinates, attributes, markers (unless B).
+void transfer_vertices(Transfer& t, const MeshOutput& mesh, const Options& o, triangulateio& out) {
+    t.set(out.numberofpoints, int_count(mesh.nodes.size(), "vertices"));
+    t.set(out.numberofpointattributes, static_cast<int>(mesh.nodes.attribute_count));
+    if (o.no_node_output) return;
+    t.array(out.pointlist, mesh.nodes.xy);
+    if (mesh.nodes.attribute_count > 0) t.array(out.pointattributelist, mesh.nodes.attributes);
+    if (!o.no_boundary_markers) t.array(out.pointmarkerlist, mesh.nodes.markers);
+}
+
+// The triangles (unless E): corners, attributes; and their neighbours (n).
+void transfer_triangles(Transfer& t, const MeshOutput& mesh, const Options& o,
+                        const Numbered& index, triangulateio& out) {
+    t.set(out.numberoftriangles, int_count(mesh.triangles.size(), "triangles"));
+    t.set(out.numberofcorners, static_cast<int>(mesh.triangles.corners_per_triangle));
+    t.set(out.numberoftriangleattributes, static_cast<int>(mesh.triangles.attribute_count));
+    if (!o.no_ele_output) {
+        t.array(out.trianglelist, mesh.triangles.corners, index);
+        if (mesh.triangles.attribute_count > 0)
+            t.array(out.triangleattributelist, mesh.triangles.attributes);
+    }
+    if (o.write_neighbours) t.array(out.neighborlist, mesh.neighbours.neighbours, index);
+}
+
+// The segments (p or c, unless P), with the input's holes and regions.
+void transfer_segments(Transfer& t, const MemoryJobResult& result, const Options& o,
+                       const Numbered& index, const triangulateio& in, triangulateio& out) {
+    // Triangle's count of segments: the subsegments when the run used any
+    // (a PSLG, a refined mesh, refinement, the hull as segments), else the
+    // hull's edges.
+    const bool uses_segments = o.poly || o.refine || o.quality || o.area_limit || o.regional_area ||
+                               o.user_test || o.conforming_delaunay || o.convex_hull;
+    t.set(out.numberofsegments,
+          int_count(uses_segments ? result.report.segments : result.report.hull_edges, "segments"));
+    if (!(o.poly || o.convex_hull) || o.no_poly_output) return;
+    t.array(out.segmentlist, result.mesh.segments.endpoints, index);
+    if (!o.no_boundary_markers) t.array(out.segmentmarkerlist, result.mesh.segments.markers);
+    // The holes and regions are the input's own arrays, not copies.
+    t.set(out.holelist, o.poly ? in.holelist : nullptr);
+    t.set(out.numberofholes, o.poly ? in.numberofholes : 0);
+    t.set(out.regionlist, o.poly ? in.regionlist : nullptr);
+    t.set(out.numberofregions, o.poly ? in.numberofregions : 0);
+}
+
+// The edges (e), with markers (unless B).
+void transfer_edges(Transfer& t, const MemoryJobResult& result, const Options& o,
+                    const Numbered& index, triangulateio& out) {
+    t.set(out.numberofedges, int_count(result.report.edges, "edges"));
+    if (!o.write_edges) return;
+    t.array(out.edgelist, result.mesh.edges.endpoints, index);
+    if (!o.no_boundary_markers) t.array(out.edgemarkerlist, result.mesh.edges.markers);
+}
+
+// The Voronoi diagram's counts, and with v its vertices and edges (no
+// markers, as in Triangle).
+void transfer_voronoi(Transfer& t, const MemoryJobResult& result, const Options& o,
+                      const Numbered& index, triangulateio& vorout) {
+    const MeshOutput& mesh = result.mesh;
+    t.set(vorout.numberofpoints, int_count(mesh.triangles.size(), "triangles"));
+    t.set(vorout.numberofpointattributes, static_cast<int>(mesh.nodes.attribute_count));
+    t.set(vorout.numberofedges, int_count(result.report.edges, "edges"));
+    if (!o.write_voronoi) return;
+    t.array(vorout.pointlist, mesh.voronoi_vertices.xy);
+    if (mesh.voronoi_vertices.attribute_count > 0)
+        t.array(vorout.pointattributelist, mesh.voronoi_vertices.attributes);
+    t.set(vorout.pointmarkerlist, static_cast<int*>(nullptr));
+    t.array(vorout.edgelist, mesh.voronoi_edges.endpoints, index);
+    t.set(vorout.edgemarkerlist, static_cast<int*>(nullptr));
+    t.array(vorout.normlist, mesh.voronoi_edges.directions);
+}
+
 }  // namespace
 
 MeshInput read_input(const triangulateio& in, const Options& o) {
@@ -163,70 +243,13 @@ MeshInput read_input(const triangulateio& in, const Options& o) {
 
 void write_output(const MemoryJobResult& result, const Options& o, const triangulateio& in,
                   triangulateio& out, triangulateio* vorout) {
-    const MeshOutput& mesh = result.mesh;
-    const JobResult& report = result.report;
-    const int base = o.zero_based ? 0 : 1;
-    const auto index = [base](std::uint32_t v) {
-        return v == NeighbourSet::none ? -1 : static_cast<int>(v) + base;
-    };
-    const bool markers = !o.no_boundary_markers;
+    const Numbered index{o.zero_based ? 0 : 1};
     Transfer t;
-
-    t.set(out.numberofpoints, int_count(mesh.nodes.size(), "vertices"));
-    t.set(out.numberofpointattributes, static_cast<int>(mesh.nodes.attribute_count));
-    if (!o.no_node_output) {
-        t.array(out.pointlist, mesh.nodes.xy);
-        if (mesh.nodes.attribute_count > 0) t.array(out.pointattributelist, mesh.nodes.attributes);
-        if (markers) t.array(out.pointmarkerlist, mesh.nodes.markers);
-    }
-
-    t.set(out.numberoftriangles, int_count(mesh.triangles.size(), "triangles"));
-    t.set(out.numberofcorners, static_cast<int>(mesh.triangles.corners_per_triangle));
-    t.set(out.numberoftriangleattributes, static_cast<int>(mesh.triangles.attribute_count));
-    if (!o.no_ele_output) {
-        t.array(out.trianglelist, mesh.triangles.corners, index);
-        if (mesh.triangles.attribute_count > 0)
-            t.array(out.triangleattributelist, mesh.triangles.attributes);
-    }
-    if (o.write_neighbours) t.array(out.neighborlist, mesh.neighbours.neighbours, index);
-
-    // Triangle's count of segments: the subsegments when the run used any
-    // (a PSLG, a refined mesh, refinement, the hull as segments), else the
-    // hull's edges.
-    const bool uses_segments = o.poly || o.refine || o.quality || o.area_limit || o.regional_area ||
-                               o.user_test || o.conforming_delaunay || o.convex_hull;
-    t.set(out.numberofsegments,
-          int_count(uses_segments ? report.segments : report.hull_edges, "segments"));
-    if ((o.poly || o.convex_hull) && !o.no_poly_output) {
-        t.array(out.segmentlist, mesh.segments.endpoints, index);
-        if (markers) t.array(out.segmentmarkerlist, mesh.segments.markers);
-        // The holes and regions are the input's own arrays, not copies.
-        t.set(out.holelist, o.poly ? in.holelist : nullptr);
-        t.set(out.numberofholes, o.poly ? in.numberofholes : 0);
-        t.set(out.regionlist, o.poly ? in.regionlist : nullptr);
-        t.set(out.numberofregions, o.poly ? in.numberofregions : 0);
-    }
-
-    t.set(out.numberofedges, int_count(report.edges, "edges"));
-    if (o.write_edges) {
-        t.array(out.edgelist, mesh.edges.endpoints, index);
-        if (markers) t.array(out.edgemarkerlist, mesh.edges.markers);
-    }
-
-    if (vorout) {
-        t.set(vorout->numberofpoints, int_count(mesh.triangles.size(), "triangles"));
-        t.set(vorout->numberofpointattributes, static_cast<int>(mesh.nodes.attribute_count));
-        t.set(vorout->numberofedges, int_count(report.edges, "edges"));
-    }
-    if (o.write_voronoi && vorout) {
-        t.array(vorout->pointlist, mesh.voronoi_vertices.xy);
-        if (mesh.voronoi_vertices.attribute_count > 0)
-            t.array(vorout->pointattributelist, mesh.voronoi_vertices.attributes);
-        t.set(vorout->pointmarkerlist, static_cast<int*>(nullptr));
-        t.array(vorout->edgelist, mesh.voronoi_edges.endpoints, index);
-        t.set(vorout->edgemarkerlist, static_cast<int*>(nullptr));
-        t.array(vorout->normlist, mesh.voronoi_edges.directions);
-    }
+    transfer_vertices(t, result.mesh, o, out);
+    transfer_triangles(t, result.mesh, o, index, out);
+    transfer_segments(t, result, o, index, in, out);
+    transfer_edges(t, result, o, index, out);
+    if (vorout) transfer_voronoi(t, result, o, index, *vorout);
     t.finish();
 }
 

@@ -96,6 +96,38 @@ void triangulate_points(const Options& options, Input& in, Triangulated& out,
     if (options.convex_hull || wants_refinement(options)) make_hull_segments(out.mesh);
 }
 
+// What the CDT did about the input's segments, as warnings on the .poly:
+// duplicates left out, overlaps kept once, a vertex added at each crossing.
+void warn_about_segments(const triangulate::CdtReport& report, const mesh::Mesh& mesh,
+                         const std::string& poly_file, int base, const WarningSink& warn) {
+    if (!report.duplicate_segments.empty())
+        warn(Warning{poly_file, 0,
+                     fmt::format("duplicate segments left out: {}",
+                                 list_some(report.duplicate_segments, [&](const auto& d) {
+                                     return fmt::format("{} (same as {})", d.first + base,
+                                                        d.second + base);
+                                 }))});
+    if (!report.overlapping_segments.empty())
+        warn(Warning{poly_file, 0,
+                     fmt::format("segments overlap; each shared stretch was kept once: {}",
+                                 list_some(report.overlapping_segments, [&](const auto& d) {
+                                     return fmt::format("segments {} and {}", d.first + base,
+                                                        d.second + base);
+                                 }))});
+    std::vector<triangulate::NewSegmentVertex> crossings;
+    for (const auto& v : report.new_vertices)
+        if (v.other_segment != triangulate::NewSegmentVertex::no_segment) crossings.push_back(v);
+    if (!crossings.empty())
+        warn(Warning{poly_file, 0,
+                     fmt::format("segments cross; a vertex was added at each crossing: {}",
+                                 list_some(crossings, [&](const auto& v) {
+                                     const auto& p = mesh.point(v.vertex);
+                                     return fmt::format("segments {} and {} at ({}, {})",
+                                                        v.segment + base, v.other_segment + base,
+                                                        p.x, p.y);
+                                 }))});
+}
+
 void triangulate_pslg(const Options& options, Input& in, Triangulated& out,
                       const WarningSink& warn) {
     const PolyFile& poly = *in.poly;
@@ -114,32 +146,7 @@ void triangulate_pslg(const Options& options, Input& in, Triangulated& out,
     const int base = in.nodes.base;
     warn_duplicates(report.duplicate_vertices, in.node_file, base, warn);
     out.duplicates = report.duplicate_vertices.size();
-    if (!report.duplicate_segments.empty())
-        warn(Warning{in.poly_file, 0,
-                     fmt::format("duplicate segments left out: {}",
-                                 list_some(report.duplicate_segments, [&](const auto& d) {
-                                     return fmt::format("{} (same as {})", d.first + base,
-                                                        d.second + base);
-                                 }))});
-    if (!report.overlapping_segments.empty())
-        warn(Warning{in.poly_file, 0,
-                     fmt::format("segments overlap; each shared stretch was kept once: {}",
-                                 list_some(report.overlapping_segments, [&](const auto& d) {
-                                     return fmt::format("segments {} and {}", d.first + base,
-                                                        d.second + base);
-                                 }))});
-    std::vector<triangulate::NewSegmentVertex> crossings;
-    for (const auto& v : report.new_vertices)
-        if (v.other_segment != triangulate::NewSegmentVertex::no_segment) crossings.push_back(v);
-    if (!crossings.empty())
-        warn(Warning{in.poly_file, 0,
-                     fmt::format("segments cross; a vertex was added at each crossing: {}",
-                                 list_some(crossings, [&](const auto& v) {
-                                     const auto& p = out.mesh.point(v.vertex);
-                                     return fmt::format("segments {} and {} at ({}, {})",
-                                                        v.segment + base, v.other_segment + base,
-                                                        p.x, p.y);
-                                 }))});
+    warn_about_segments(report, out.mesh, in.poly_file, base, warn);
     // Attributes of the new vertices: interpolated along their segment.
     keep_input_attributes(in.nodes.data, out.mesh);
     for (const auto& v : report.new_vertices) {

@@ -132,6 +132,80 @@ void check_nodes(const NodeSet& nodes, const std::string& path) {
     check_sizes(!nodes.has_markers() || nodes.markers.size() == nodes.size(), path, "marker count");
 }
 
+// One triangle's line of the .ele file: its number, its corners, its
+// attributes.
+struct EleLine {
+    std::uint32_t corners;     // per triangle, 3 or 6
+    std::uint32_t attributes;  // per triangle
+    int base;
+
+    void put(std::size_t t, const std::uint32_t* c, const double* attribute,
+             fmt::memory_buffer& text) const {
+        Columns line;
+        line.number(numbered(t, base)).blanks("  ");
+        for (std::uint32_t k = 0; k < corners; ++k)
+            line.blanks("  ").number(numbered_index(c[k], base));
+        if (attributes == 0) {
+            line.blanks("\n").append_to(text);
+            return;
+        }
+        line.append_to(text);
+        Out out(text);
+        for (std::uint32_t a = 0; a < attributes; ++a)
+            fmt::format_to(out, FMT_COMPILE("  {}"), attribute[a]);
+        text.push_back('\n');
+    }
+};
+
+// The triangles read and formatted one after another on this thread.
+void put_triangles_in_order(OutputTransaction::File& file, const EleSource& source,
+                            const EleLine& line) {
+    std::uint32_t c[6];
+    std::vector<double> attributes(line.attributes);
+    for (std::size_t t = 0; t < source.count; ++t) {
+        source.next(c, attributes.data());
+        line.put(t, c, attributes.data(), file.buffer());
+        file.flush_if_full();
+    }
+}
+
+// The triangles in pieces of detail::lines_per_piece lines, formatted on
+// any of the threads.  Each piece's triangles are read into its slot, then
+// formatted; a source that reads in order only is read when the piece is
+// claimed, pieces being claimed in order.
+void put_triangles_in_pieces(OutputTransaction::File& file, const EleSource& source,
+                             const EleLine& line, FormatThreads& threads) {
+    constexpr std::size_t per_piece = detail::lines_per_piece;
+    const std::size_t n = source.count;
+    const std::uint32_t nc = line.corners, na = line.attributes;
+    std::vector<std::vector<std::uint32_t>> corners(threads.window());
+    std::vector<std::vector<double>> attributes(threads.window());
+    FormatThreads::Pieces pieces;
+    pieces.count = (n + per_piece - 1) / per_piece;
+    const auto lines = [n](std::size_t piece) {
+        return std::min(n, (piece + 1) * per_piece) - piece * per_piece;
+    };
+    const auto read = [&](std::size_t piece, std::size_t slot) {
+        const std::size_t k = lines(piece);
+        corners[slot].resize(k * nc);
+        attributes[slot].resize(k * na);
+        if (source.read) {
+            source.read(piece * per_piece, k, corners[slot].data(), attributes[slot].data());
+            return;
+        }
+        for (std::size_t i = 0; i < k; ++i)
+            source.next(&corners[slot][i * nc], attributes[slot].data() + i * na);
+    };
+    if (!source.read) pieces.prepare = read;
+    pieces.format = [&](std::size_t piece, std::size_t slot, fmt::memory_buffer& text) {
+        if (source.read) read(piece, slot);
+        for (std::size_t i = 0; i < lines(piece); ++i)
+            line.put(piece * per_piece + i, &corners[slot][i * nc],
+                     attributes[slot].data() + i * na, text);
+    };
+    threads.write_pieces(file, pieces);
+}
+
 }  // namespace
 
 void write_node(OutputTransaction& tx, const std::string& path, const NodeSet& nodes,
@@ -211,69 +285,14 @@ void write_ele(OutputTransaction& tx, const std::string& path, const EleSource& 
     const std::uint32_t nc = source.corners_per_triangle;
     check_sizes(nc == 3 || nc == 6, path, "nodes per triangle");
     const std::size_t n = source.count;
-    const std::uint32_t na = source.attribute_count;
     auto& file = tx.begin_file(path);
-    auto& buf = file.buffer();
-    Out out(buf);
-    fmt::format_to(out, FMT_COMPILE("{}  {}  {}\n"), n, nc, na);
-    const int base = format.base;
-    // Triangle t's line, from its corners and attributes.
-    const auto put_triangle = [&](std::size_t t, const std::uint32_t* c, const double* attributes,
-                                  fmt::memory_buffer& text) {
-        Columns line;
-        line.number(numbered(t, base)).blanks("  ");
-        for (std::uint32_t k = 0; k < nc; ++k) line.blanks("  ").number(numbered_index(c[k], base));
-        if (na == 0) {
-            line.blanks("\n").append_to(text);
-            return;
-        }
-        line.append_to(text);
-        Out out(text);
-        for (std::uint32_t a = 0; a < na; ++a)
-            fmt::format_to(out, FMT_COMPILE("  {}"), attributes[a]);
-        text.push_back('\n');
-    };
+    fmt::format_to(Out(file.buffer()), FMT_COMPILE("{}  {}  {}\n"), n, nc, source.attribute_count);
+    const EleLine line{nc, source.attribute_count, format.base};
     FormatThreads* const threads = format.threads;
-    if (threads == nullptr || threads->threads() < 2 || n <= detail::lines_per_piece) {
-        std::uint32_t c[6];
-        std::vector<double> attributes(na);
-        for (std::size_t t = 0; t < n; ++t) {
-            source.next(c, attributes.data());
-            put_triangle(t, c, attributes.data(), buf);
-            file.flush_if_full();
-        }
-    } else {
-        // Each piece's triangles are read into its slot, then formatted, on
-        // any thread; a source that reads in order only is read when the
-        // piece is claimed, pieces being claimed in order.
-        constexpr std::size_t per_piece = detail::lines_per_piece;
-        std::vector<std::vector<std::uint32_t>> corners(threads->window());
-        std::vector<std::vector<double>> attributes(threads->window());
-        FormatThreads::Pieces pieces;
-        pieces.count = (n + per_piece - 1) / per_piece;
-        const auto lines = [n](std::size_t piece) {
-            return std::min(n, (piece + 1) * per_piece) - piece * per_piece;
-        };
-        const auto read = [&](std::size_t piece, std::size_t slot) {
-            const std::size_t k = lines(piece);
-            corners[slot].resize(k * nc);
-            attributes[slot].resize(k * na);
-            if (source.read) {
-                source.read(piece * per_piece, k, corners[slot].data(), attributes[slot].data());
-                return;
-            }
-            for (std::size_t i = 0; i < k; ++i)
-                source.next(&corners[slot][i * nc], attributes[slot].data() + i * na);
-        };
-        if (!source.read) pieces.prepare = read;
-        pieces.format = [&](std::size_t piece, std::size_t slot, fmt::memory_buffer& text) {
-            if (source.read) read(piece, slot);
-            for (std::size_t i = 0; i < lines(piece); ++i)
-                put_triangle(piece * per_piece + i, &corners[slot][i * nc],
-                             attributes[slot].data() + i * na, text);
-        };
-        threads->write_pieces(file, pieces);
-    }
+    if (threads == nullptr || threads->threads() < 2 || n <= detail::lines_per_piece)
+        put_triangles_in_order(file, source, line);
+    else
+        put_triangles_in_pieces(file, source, line, *threads);
     file.finish(format.command, format.stamp);
 }
 

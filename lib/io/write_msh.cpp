@@ -148,39 +148,31 @@ void put_node_data(File& file, const std::string& name, std::size_t n,
     fmt::format_to(out, "$EndNodeData\n");
 }
 
-}  // namespace
-
-void write_msh(OutputTransaction& tx, const std::string& path, const MeshExport& mesh,
-               const WriteFormat& format) {
+// The caller's arrays must agree in size before anything is written.
+void check_consistent(const std::string& path, const MeshExport& mesh) {
     const NodeSet& nodes = *mesh.nodes;
     const std::uint32_t nc = mesh.corners_per_triangle;
     if (nodes.xy.size() % 2 != 0 ||
         nodes.attributes.size() != nodes.size() * nodes.attribute_count ||
         (nodes.has_markers() && nodes.markers.size() != nodes.size()) || (nc != 3 && nc != 6))
         throw OutputError("cannot write " + path + ": inconsistent data");
-    static const SegmentSet no_segments;
-    const SegmentSet& segments = mesh.segments != nullptr ? *mesh.segments : no_segments;
-    const bool markers = format.markers && segments.has_markers();
-    const std::map<double, Group> regions = regions_of(mesh);
-    const std::map<int, Group> curves = curves_of(segments, markers);
-    const Box box = bounding_box(nodes);
-    const std::size_t n = nodes.size(), m = mesh.triangle_count;
+}
 
-    File& file = tx.begin_file(path);
-    auto& buf = file.buffer();
-    Out out(buf);
-    fmt::format_to(out, "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n");
-
-    std::size_t physicals = regions.size();
-    physicals += curves.size();
-    fmt::format_to(out, "$PhysicalNames\n{}\n", physicals);
+// $PhysicalNames: a named group for every curve and every surface.
+void put_physical_names(Out out, const std::map<int, Group>& curves,
+                        const std::map<double, Group>& regions) {
+    fmt::format_to(out, "$PhysicalNames\n{}\n", regions.size() + curves.size());
     for (const auto& [marker, curve] : curves)
         fmt::format_to(out, "1 {} \"{}\"\n", curve.physical, curve.name);
     for (const auto& [value, region] : regions)
         fmt::format_to(out, "2 {} \"{}\"\n", region.physical, region.name);
     fmt::format_to(out, "$EndPhysicalNames\n");
+}
 
-    // Every entity gets the mesh's bounding box, which contains its own.
+// $Entities: the curves, then the surfaces.  Every entity gets the mesh's
+// bounding box, which contains its own.
+void put_entities(Out out, const std::map<int, Group>& curves,
+                  const std::map<double, Group>& regions, const Box& box) {
     fmt::format_to(out, "$Entities\n0 {} {} 0\n", curves.size(), regions.size());
     const std::string bounds =
         fmt::format("{} {} 0 {} {} 0", box.min_x, box.min_y, box.max_x, box.max_y);
@@ -189,8 +181,13 @@ void write_msh(OutputTransaction& tx, const std::string& path, const MeshExport&
     for (const auto& [value, region] : regions)
         fmt::format_to(out, "{} {} 1 {} 0\n", region.entity, bounds, region.physical);
     fmt::format_to(out, "$EndEntities\n");
+}
 
-    // All nodes in one block, on the first surface.
+// $Nodes: all nodes in one block, on the first surface: their tags, then
+// their coordinates.
+void put_nodes(File& file, const NodeSet& nodes) {
+    Out out(file.buffer());
+    const std::size_t n = nodes.size();
     fmt::format_to(out, "$Nodes\n1 {} 1 {}\n2 1 0 {}\n", n, n, n);
     for (std::size_t v = 0; v < n; ++v) {
         fmt::format_to(out, FMT_COMPILE("{}\n"), v + 1);
@@ -201,15 +198,21 @@ void write_msh(OutputTransaction& tx, const std::string& path, const MeshExport&
         file.flush_if_full();
     }
     fmt::format_to(out, "$EndNodes\n");
+}
 
-    const std::size_t lines = segments.size();
+// The segments as line elements M + 1 on, one block per curve (a pass over
+// the segments per curve).
+void put_curve_lines(File& file, const MeshExport& mesh, const SegmentSet& segments, bool markers,
+                     const std::map<int, Group>& curves) {
+    const std::uint32_t nc = mesh.corners_per_triangle;
+    const std::size_t m = mesh.triangle_count;
     const std::vector<std::uint32_t> middle =
         nc == 6 ? segment_midpoints(mesh, segments) : std::vector<std::uint32_t>{};
-    fmt::format_to(out, "$Elements\n{} {} 1 {}\n", curves.size() + regions.size(), m + lines,
-                   m + lines);
+    auto& buf = file.buffer();
+    Out out(buf);
     for (const auto& [marker, curve] : curves) {
         fmt::format_to(out, "1 {} {} {}\n", curve.entity, nc == 6 ? 8 : 1, curve.count);
-        for (std::size_t s = 0; s < lines; ++s) {
+        for (std::size_t s = 0; s < segments.size(); ++s) {
             if ((markers ? segments.markers[s] : 0) != marker) continue;
             fmt::format_to(out, FMT_COMPILE("{} {} {}"), m + s + 1,
                            std::uint64_t{segments.endpoints[2 * s]} + 1,
@@ -219,8 +222,17 @@ void write_msh(OutputTransaction& tx, const std::string& path, const MeshExport&
             file.flush_if_full();
         }
     }
-    // One pass over the triangles per region.
+}
+
+// The triangles as elements 1 to M, numbered in the .ele file's order but
+// written one block per region, as gmsh wants an entity's elements together
+// (a pass over the triangles per region).
+void put_region_triangles(File& file, const MeshExport& mesh,
+                          const std::map<double, Group>& regions) {
     static constexpr int gmsh_order[6] = {0, 1, 2, 5, 3, 4};
+    const std::uint32_t nc = mesh.corners_per_triangle;
+    auto& buf = file.buffer();
+    Out out(buf);
     for (const auto& [value, region] : regions) {
         fmt::format_to(out, "2 {} {} {}\n", region.entity, nc == 6 ? 9 : 2, region.count);
         EleSource source = mesh.triangles();
@@ -236,8 +248,22 @@ void write_msh(OutputTransaction& tx, const std::string& path, const MeshExport&
             file.flush_if_full();
         }
     }
-    fmt::format_to(out, "$EndElements\n");
+}
 
+// $Elements: the lines, then the triangles.
+void put_elements(File& file, const MeshExport& mesh, const SegmentSet& segments, bool markers,
+                  const std::map<int, Group>& curves, const std::map<double, Group>& regions) {
+    const std::size_t elements = mesh.triangle_count + segments.size();
+    fmt::format_to(Out(file.buffer()), "$Elements\n{} {} 1 {}\n", curves.size() + regions.size(),
+                   elements, elements);
+    put_curve_lines(file, mesh, segments, markers, curves);
+    put_region_triangles(file, mesh, regions);
+    fmt::format_to(Out(file.buffer()), "$EndElements\n");
+}
+
+// $NodeData: the vertex markers, then each vertex attribute.
+void put_vertex_data(File& file, const NodeSet& nodes, const WriteFormat& format) {
+    const std::size_t n = nodes.size();
     if (format.markers && nodes.has_markers())
         put_node_data(file, "boundary_marker", n, [&nodes](Out o, std::size_t v) {
             fmt::format_to(o, "{}", nodes.markers[v]);
@@ -246,6 +272,28 @@ void write_msh(OutputTransaction& tx, const std::string& path, const MeshExport&
         put_node_data(file, fmt::format("attribute_{}", a), n, [&nodes, a](Out o, std::size_t v) {
             fmt::format_to(o, "{}", nodes.attributes[v * nodes.attribute_count + a]);
         });
+}
+
+}  // namespace
+
+void write_msh(OutputTransaction& tx, const std::string& path, const MeshExport& mesh,
+               const WriteFormat& format) {
+    check_consistent(path, mesh);
+    const NodeSet& nodes = *mesh.nodes;
+    static const SegmentSet no_segments;
+    const SegmentSet& segments = mesh.segments != nullptr ? *mesh.segments : no_segments;
+    const bool markers = format.markers && segments.has_markers();
+    const std::map<double, Group> regions = regions_of(mesh);
+    const std::map<int, Group> curves = curves_of(segments, markers);
+
+    File& file = tx.begin_file(path);
+    Out out(file.buffer());
+    fmt::format_to(out, "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n");
+    put_physical_names(out, curves, regions);
+    put_entities(out, curves, regions, bounding_box(nodes));
+    put_nodes(file, nodes);
+    put_elements(file, mesh, segments, markers, curves, regions);
+    put_vertex_data(file, nodes, format);
     file.finish(format.command, format.stamp, File::Closing::gmsh_section);
 }
 

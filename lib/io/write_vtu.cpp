@@ -3,9 +3,10 @@
 // formatting numbers.  The XML head lists every array with its byte offset
 // into the appended section; that section is '_' followed by each array as
 // a 64-bit byte count and the values, in the machine's byte order (which
-// the head names), last array first (see write_vtu).  The triangles are read from the mesh once per
-// array that needs them (connectivity, each attribute, angles, areas) rather than copied into
-// memory, which would cost the most at the moment memory use peaks.
+// the head names), last array first (put_head says why).  The triangles are
+// read from the mesh once per array that needs them (connectivity, each
+// attribute, angles, areas) rather than copied into memory, which would
+// cost the most at the moment memory use peaks.
 //
 // VTK numbers points from 0 whatever the run's base.  Six-node triangles
 // are VTK_QUADRATIC_TRIANGLE, whose midpoints come in the order (0,1),
@@ -101,28 +102,30 @@ void append_per_triangle(File& file, const MeshExport& mesh,
     out.flush();
 }
 
-std::vector<Array> arrays_of(const MeshExport& mesh, const WriteFormat& format) {
-    const NodeSet& nodes = *mesh.nodes;
-    const std::uint64_t n = nodes.size(), m = mesh.triangle_count;
-    const std::uint32_t nc = mesh.corners_per_triangle;
-    std::vector<Array> arrays;
-    using S = Array::Section;
-
+// The vertices' markers and attributes (PointData).
+void add_point_data(std::vector<Array>& arrays, const NodeSet& nodes, const WriteFormat& format) {
+    const std::uint64_t n = nodes.size();
     if (format.markers && nodes.has_markers())
-        arrays.push_back({S::point_data, "boundary_marker", "Int32", 1, 4 * n, [&nodes](File& f) {
-                              static_assert(sizeof(int) == 4);
-                              f.append(nodes.markers.data(), nodes.markers.size() * sizeof(int));
-                          }});
+        arrays.push_back(
+            {Array::Section::point_data, "boundary_marker", "Int32", 1, 4 * n, [&nodes](File& f) {
+                 static_assert(sizeof(int) == 4);
+                 f.append(nodes.markers.data(), nodes.markers.size() * sizeof(int));
+             }});
     for (std::uint32_t a = 0; a < nodes.attribute_count; ++a)
-        arrays.push_back({S::point_data, fmt::format("attribute_{}", a), "Float64", 1, 8 * n,
-                          [&nodes, a](File& f) {
+        arrays.push_back({Array::Section::point_data, fmt::format("attribute_{}", a), "Float64", 1,
+                          8 * n, [&nodes, a](File& f) {
                               Appender<double> out(f);
                               const std::size_t na = nodes.attribute_count;
                               for (std::size_t v = 0; v < nodes.size(); ++v)
                                   out.push(nodes.attributes[v * na + a]);
                               out.flush();
                           }});
+}
 
+// The triangles' attributes, smallest angles and areas (CellData).
+void add_cell_data(std::vector<Array>& arrays, const MeshExport& mesh) {
+    const std::uint64_t m = mesh.triangle_count;
+    using S = Array::Section;
     for (std::uint32_t a = 0; a < mesh.attribute_count; ++a)
         arrays.push_back({S::cell_data, fmt::format("region_attribute_{}", a), "Float64", 1, 8 * m,
                           [&mesh, a](File& f) {
@@ -134,7 +137,7 @@ std::vector<Array> arrays_of(const MeshExport& mesh, const WriteFormat& format) 
     // The angles and areas are derived, for looking at the mesh rather than
     // for computing with: single precision (7 digits) makes the file a
     // sixth smaller.
-    const double* xy = nodes.xy.data();
+    const double* xy = mesh.nodes->xy.data();
     arrays.push_back({S::cell_data, "min_angle", "Float32", 1, 4 * m, [&mesh, xy](File& f) {
                           append_per_triangle<float>(
                               f, mesh, [xy](const std::uint32_t* c, const double*) {
@@ -150,8 +153,12 @@ std::vector<Array> arrays_of(const MeshExport& mesh, const WriteFormat& format) 
                                       xy + 2 * std::size_t{c[2]});
              });
          }});
+}
 
-    arrays.push_back({S::points, "Points", "Float64", 3, 24 * n, [&nodes](File& f) {
+// The points, with z = 0 (Points).
+void add_points(std::vector<Array>& arrays, const NodeSet& nodes) {
+    arrays.push_back({Array::Section::points, "Points", "Float64", 3,
+                      24 * std::uint64_t{nodes.size()}, [&nodes](File& f) {
                           Appender<double> out(f);
                           for (std::size_t v = 0; v < nodes.size(); ++v) {
                               out.push(nodes.xy[2 * v]);
@@ -160,8 +167,22 @@ std::vector<Array> arrays_of(const MeshExport& mesh, const WriteFormat& format) 
                           }
                           out.flush();
                       }});
+}
 
-    // 32-bit integers where they suffice (half the bytes), else 64-bit.
+// Where each cell's corners end in the connectivity: nc, 2 nc, ...
+template <class I>
+void append_offsets(File& file, std::uint64_t m, std::uint32_t nc) {
+    Appender<I> out(file);
+    for (std::uint64_t t = 1; t <= m; ++t) out.push(static_cast<I>(t * nc));
+    out.flush();
+}
+
+// The connectivity, offsets and cell types (Cells), in 32-bit integers
+// where they suffice (half the bytes), else 64-bit.
+void add_cells(std::vector<Array>& arrays, const MeshExport& mesh) {
+    const std::uint64_t n = mesh.nodes->size(), m = mesh.triangle_count;
+    const std::uint32_t nc = mesh.corners_per_triangle;
+    using S = Array::Section;
     constexpr std::uint64_t int32_limit = std::numeric_limits<std::int32_t>::max();
     const bool wide_index = n > int32_limit;
     const bool wide_offset = m * nc > int32_limit;
@@ -174,17 +195,10 @@ std::vector<Array> arrays_of(const MeshExport& mesh, const WriteFormat& format) 
                       }});
     arrays.push_back({S::cells, "offsets", wide_offset ? "Int64" : "Int32", 1,
                       m * (wide_offset ? 8 : 4), [m, nc, wide_offset](File& f) {
-                          if (wide_offset) {
-                              Appender<std::int64_t> out(f);
-                              for (std::uint64_t t = 1; t <= m; ++t)
-                                  out.push(static_cast<std::int64_t>(t * nc));
-                              out.flush();
-                          } else {
-                              Appender<std::int32_t> out(f);
-                              for (std::uint64_t t = 1; t <= m; ++t)
-                                  out.push(static_cast<std::int32_t>(t * nc));
-                              out.flush();
-                          }
+                          if (wide_offset)
+                              append_offsets<std::int64_t>(f, m, nc);
+                          else
+                              append_offsets<std::int32_t>(f, m, nc);
                       }});
     arrays.push_back({S::cells, "types", "UInt8", 1, m, [m, nc](File& f) {
                           // VTK_TRIANGLE, VTK_QUADRATIC_TRIANGLE
@@ -193,22 +207,36 @@ std::vector<Array> arrays_of(const MeshExport& mesh, const WriteFormat& format) 
                           for (std::uint64_t t = 0; t < m; ++t) out.push(type);
                           out.flush();
                       }});
+}
+
+// Every array of the file, in the head's order (sections in VTK's order).
+std::vector<Array> arrays_of(const MeshExport& mesh, const WriteFormat& format) {
+    std::vector<Array> arrays;
+    add_point_data(arrays, *mesh.nodes, format);
+    add_cell_data(arrays, mesh);
+    add_points(arrays, *mesh.nodes);
+    add_cells(arrays, mesh);
     return arrays;
 }
 
-}  // namespace
-
-void write_vtu(OutputTransaction& tx, const std::string& path, const MeshExport& mesh,
-               const WriteFormat& format) {
+void check_consistent(const std::string& path, const MeshExport& mesh) {
     const NodeSet& nodes = *mesh.nodes;
     if (nodes.xy.size() % 2 != 0 ||
         nodes.attributes.size() != nodes.size() * nodes.attribute_count ||
         (nodes.has_markers() && nodes.markers.size() != nodes.size()) ||
         (mesh.corners_per_triangle != 3 && mesh.corners_per_triangle != 6))
         throw OutputError("cannot write " + path + ": inconsistent data");
-    const std::vector<Array> arrays = arrays_of(mesh, format);
+}
 
-    File& file = tx.begin_file(path);
+// The XML head: a DataArray element per array, with its offset into the
+// appended section.  That section holds the arrays in the reverse of the
+// head's order.  Any order is valid VTK; this one is also read correctly by
+// meshio, which turns the raw data into base64 array by array, in the order
+// of the data, and finds each array's element by its old offset among
+// elements whose offsets it has already replaced with new ones: with the
+// head in reverse order, the element looked for always comes before any
+// such element that happens to hold the same number.
+void put_head(File& file, const std::vector<Array>& arrays, std::size_t points, std::size_t cells) {
     auto out = std::back_inserter(file.buffer());
     fmt::format_to(out,
                    "<?xml version=\"1.0\"?>\n"
@@ -217,15 +245,8 @@ void write_vtu(OutputTransaction& tx, const std::string& path, const MeshExport&
                    "  <UnstructuredGrid>\n"
                    "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n",
                    std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian",
-                   nodes.size(), mesh.triangle_count);
+                   points, cells);
     static constexpr const char* section_tag[] = {"PointData", "CellData", "Points", "Cells"};
-    // The appended section holds the arrays in the reverse of the head's
-    // order.  Any order is valid VTK; this one is also read correctly by
-    // meshio, which turns the raw data into base64 array by array, in the
-    // order of the data, and finds each array's element by its old offset
-    // among elements whose offsets it has already replaced with new ones:
-    // with the head in reverse order, the element looked for always comes
-    // before any such element that happens to hold the same number.
     std::vector<std::uint64_t> offsets(arrays.size());
     std::uint64_t end = 0;
     for (std::size_t i = arrays.size(); i-- > 0;) {
@@ -250,7 +271,20 @@ void write_vtu(OutputTransaction& tx, const std::string& path, const MeshExport&
     }
     fmt::format_to(out,
                    "    </Piece>\n"
-                   "  </UnstructuredGrid>\n"
+                   "  </UnstructuredGrid>\n");
+}
+
+}  // namespace
+
+void write_vtu(OutputTransaction& tx, const std::string& path, const MeshExport& mesh,
+               const WriteFormat& format) {
+    check_consistent(path, mesh);
+    const std::vector<Array> arrays = arrays_of(mesh, format);
+    File& file = tx.begin_file(path);
+    put_head(file, arrays, mesh.nodes->size(), mesh.triangle_count);
+    // The appended section: '_', then each array, last first, as its byte
+    // count and its values.
+    fmt::format_to(std::back_inserter(file.buffer()),
                    "  <AppendedData encoding=\"raw\">\n"
                    "_");
     for (std::size_t i = arrays.size(); i-- > 0;) {

@@ -49,6 +49,7 @@ constexpr double u = kUnitRoundoff;
 // k = (3 + 16u) u (exactly representable) holds with room to spare; it is
 // also Shewchuk's constant.
 constexpr double kOrientBoundA = (3.0 + 16.0 * u) * u;
+static_assert(kOrientBoundA == detail::orient_bound_a);
 
 // orient2d, stage B.  B = acx bcy - acy bcx computed exactly; T differs from
 // it only through the rounding of the four differences:
@@ -72,6 +73,7 @@ constexpr double kOrientBoundB = (2.0 + 8.0 * u) * u;
 // plus u^2 terms for rounding errbound itself: k = (10 + 128u) u suffices.
 // (Shewchuk proves 96 with a finer accounting; the difference is immaterial.)
 constexpr double kIncircleBoundA = (10.0 + 128.0 * u) * u;
+static_assert(kIncircleBoundA == detail::incircle_bound_a);
 
 // incircle, stage B.  B = T' computed exactly; |T - B| <= ((1+u)^4 - 1) P'
 // <= (4u + 6u^2 + O(u^3)) (1-u)^-7 permanent = (4u + 34u^2 + O(u^3)) permanent.
@@ -138,9 +140,10 @@ double incircle_exact_diffs(const Point& a, const Point& b, const Point& c, cons
     return approximate(n, det);
 }
 
+}  // namespace
+
 // Stages B and D of orient2d; detsum is stage A's (see kOrientBoundA).
-[[gnu::noinline]] double orient2d_adapt(const Point& a, const Point& b, const Point& c,
-                                        double detsum) {
+double detail::orient2d_adapt(const Point& a, const Point& b, const Point& c, double detsum) {
     const double acx = a.x - c.x;
     const double bcx = b.x - c.x;
     const double acy = a.y - c.y;
@@ -162,8 +165,8 @@ double incircle_exact_diffs(const Point& a, const Point& b, const Point& c, cons
 }
 
 // Stages B and D of incircle; permanent is stage A's (see kIncircleBoundA).
-[[gnu::noinline]] double incircle_adapt(const Point& a, const Point& b, const Point& c,
-                                        const Point& d, double permanent) {
+double detail::incircle_adapt(const Point& a, const Point& b, const Point& c, const Point& d,
+                              double permanent) {
     const double adx = a.x - d.x;
     const double bdx = b.x - d.x;
     const double cdx = c.x - d.x;
@@ -191,58 +194,6 @@ double incircle_exact_diffs(const Point& a, const Point& b, const Point& c, cons
     if (std::abs(est.value) > widen(est.error + kIncircleBoundB * permanent)) return est.value;
 
     return incircle_exact_diffs(a, b, c, d);
-}
-
-}  // namespace
-
-double orient2d(const Point& a, const Point& b, const Point& c) {
-    const double detleft = (a.x - c.x) * (b.y - c.y);
-    const double detright = (a.y - c.y) * (b.x - c.x);
-    const double det = detleft - detright;
-
-    // One well-predicted branch decides almost every call (a branch on the
-    // signs of detleft and detright first would be mispredicted half the
-    // time on random input).
-    const double detsum = std::abs(detleft) + std::abs(detright);
-    const double errbound = kOrientBoundA * detsum;
-    if (std::abs(det) > errbound) return det;
-
-    // When detleft and detright do not have the same strict sign there is no
-    // cancellation: each has the sign of its exact counterpart (a product is
-    // zero only when an exact difference is), so det's sign is exact.  This
-    // catches, e.g., exactly collinear points on axis-parallel lines.
-    if (!(detleft > 0.0 && detright > 0.0) && !(detleft < 0.0 && detright < 0.0)) return det;
-    return orient2d_adapt(a, b, c, detsum);
-}
-
-double incircle(const Point& a, const Point& b, const Point& c, const Point& d) {
-    const double adx = a.x - d.x;
-    const double bdx = b.x - d.x;
-    const double cdx = c.x - d.x;
-    const double ady = a.y - d.y;
-    const double bdy = b.y - d.y;
-    const double cdy = c.y - d.y;
-
-    const double bdxcdy = bdx * cdy;
-    const double cdxbdy = cdx * bdy;
-    const double alift = adx * adx + ady * ady;
-
-    const double cdxady = cdx * ady;
-    const double adxcdy = adx * cdy;
-    const double blift = bdx * bdx + bdy * bdy;
-
-    const double adxbdy = adx * bdy;
-    const double bdxady = bdx * ady;
-    const double clift = cdx * cdx + cdy * cdy;
-
-    const double det =
-        alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
-    const double permanent = (std::abs(bdxcdy) + std::abs(cdxbdy)) * alift +
-                             (std::abs(cdxady) + std::abs(adxcdy)) * blift +
-                             (std::abs(adxbdy) + std::abs(bdxady)) * clift;
-    const double errbound = kIncircleBoundA * permanent;
-    if (std::abs(det) > errbound) return det;
-    return incircle_adapt(a, b, c, d, permanent);
 }
 
 double orient2d_exact(const Point& a, const Point& b, const Point& c) {

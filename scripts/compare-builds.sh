@@ -88,16 +88,21 @@ done
 # graded pipe at c = 1e-3 (1.5 million triangles) and area bounds at 30 and
 # 33 degrees.
 cc -O2 -shared -fPIC -DGRADING_C=1e-3 -o "$work/graded.so" "$root/poly-samples/grading.c" -lm
+# And the Delaunay triangulation of 300,000 random points.
+awk 'BEGIN { srand(7); n = 300000; print n, 2, 0, 0;
+  for (i = 1; i <= n; i++) printf "%d %.17g %.17g\n", i, rand(), rand() }' >"$work/random.node"
 large=("pipe.poly|-pq20 --unsuitable $work/graded.so" "flow.poly|-pq30a2e-4"
-  "flow.poly|-pq33a5e-4 -e -n" "pipe.poly|-pq25a2")
+  "flow.poly|-pq33a5e-4 -e -n" "pipe.poly|-pq25a2" "random.node|-e" "random.node|-q")
 for run in "${large[@]}"; do
   name=${run%%|*}
   switches=${run#*|}
+  source_file=$root/poly-samples/$name
+  [ "$name" = random.node ] && source_file=$work/random.node
   for threads in 1 2; do
     for side in old new; do
       rm -rf "${work:?}/$side"
       mkdir -p "$work/$side"
-      cp "$root/poly-samples/$name" "$work/$side/"
+      cp "$source_file" "$work/$side/"
       program=$old
       [ $side = new ] && program=$new
       mesh "$work/$side" "$program" "$switches -j$threads" "$name"

@@ -108,8 +108,13 @@ void fan_cavity(Pool& pool, InsertBuffer& buffer, std::size_t first, bool open, 
     const std::size_t count = open ? m - 1 : m;
     buffer.created.clear();
     TriangleId previous = no_triangle;
+    // The edges from `first` round to it again (a wrapping index rather than
+    // a remainder: a division per new triangle cost more than the rest of
+    // its making).
+    std::size_t at = first < m ? first : first - m;
     for (std::size_t i = 0; i < count; ++i) {
-        const InsertBuffer::BoundaryEdge& b = boundary[(first + i) % m];
+        const InsertBuffer::BoundaryEdge& b = boundary[at];
+        if (++at == m) at = 0;
         const TriangleId id = pool.create(b.from, b.to, v);
         Triangle& t = mesh.triangle(id);
         if (b.subsegment) t.set_subsegment(2, true);

@@ -5,6 +5,7 @@
 #include "triangulate/spatial_sort.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <limits>
 
@@ -49,22 +50,51 @@ void sort_by_curve(std::uint64_t* begin, std::uint64_t* end, std::vector<std::ui
 
 }  // namespace
 
+namespace {
+
+// The curve's recursion carries two bits from level to level, whether the
+// remaining coordinates are complemented and whether they are swapped (the
+// textbook loop's rotations: complement both when (rx, ry) = (1, 0), swap
+// them when ry = 0; both maps commute).  A step of the table reads four
+// levels at once: for each such state and four bits of x and of y, the
+// eight bits of the position they add and the state after them.
+struct HilbertStep {
+    std::uint8_t digits;
+    std::uint8_t state;  // bit 0: complemented, bit 1: swapped
+};
+
+constexpr std::array<std::array<HilbertStep, 256>, 4> hilbert_steps = [] {
+    std::array<std::array<HilbertStep, 256>, 4> table{};
+    for (std::uint32_t state = 0; state < 4; ++state)
+        for (std::uint32_t xy = 0; xy < 256; ++xy) {
+            std::uint32_t complemented = state & 1u, swapped = state >> 1;
+            std::uint32_t digits = 0;
+            for (int level = 3; level >= 0; --level) {
+                const std::uint32_t bx = (xy >> (4 + level)) & 1u, by = (xy >> level) & 1u;
+                const std::uint32_t exchange = (bx ^ by) & swapped;
+                const std::uint32_t rx = bx ^ exchange ^ complemented;
+                const std::uint32_t ry = by ^ exchange ^ complemented;
+                digits = (digits << 2) | ((3u * rx) ^ ry);
+                const std::uint32_t turn = ry ^ 1u;
+                complemented ^= turn & rx;
+                swapped ^= turn;
+            }
+            table[state][xy] = {static_cast<std::uint8_t>(digits),
+                                static_cast<std::uint8_t>(complemented | (swapped << 1))};
+        }
+    return table;
+}();
+
+}  // namespace
+
 std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y) {
-    // The textbook loop rotates the remaining coordinates at each level:
-    // complement both when (rx, ry) = (1, 0), swap them when ry = 0.  Both
-    // maps commute, so the whole history is two bits (complemented,
-    // swapped), applied to each level's bits as they are read: no branches
-    // (the textbook branches are unpredictable on random points).
-    std::uint32_t d = 0, complemented = 0, swapped = 0;
-    for (int level = 15; level >= 0; --level) {
-        const std::uint32_t bx = (x >> level) & 1u, by = (y >> level) & 1u;
-        const std::uint32_t exchange = (bx ^ by) & swapped;
-        const std::uint32_t rx = bx ^ exchange ^ complemented;
-        const std::uint32_t ry = by ^ exchange ^ complemented;
-        d = (d << 2) | ((3u * rx) ^ ry);
-        const std::uint32_t turn = ry ^ 1u;
-        complemented ^= turn & rx;
-        swapped ^= turn;
+    // Four table steps of four levels each, the highest first.
+    std::uint32_t d = 0, state = 0;
+    for (int shift = 12; shift >= 0; shift -= 4) {
+        const HilbertStep step =
+            hilbert_steps[state][((x >> shift) & 15u) << 4 | ((y >> shift) & 15u)];
+        d = (d << 8) | step.digits;
+        state = step.state;
     }
     return d;
 }

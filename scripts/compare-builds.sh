@@ -50,9 +50,33 @@ compare() {  # LABEL: compares the two folders
   done
 }
 
-for input in "${inputs[@]}"; do
+# both INPUT SWITCHES THREADS [AREA]: meshes a copy of INPUT with each
+# build, in $work/old and $work/new, and compares the folders.  With AREA,
+# each first mesh is refined again with an .area file that halves the
+# bound of every other triangle (-ra).
+both() {
+  local input=$1 switches=$2 threads=$3 area=${4:-}
+  local name base side program
   name=$(basename "$input")
   base=${name%.*}
+  for side in old new; do
+    rm -rf "${work:?}/$side"
+    mkdir -p "$work/$side"
+    cp "$input" "$work/$side/"
+    program=$old
+    [ $side = new ] && program=$new
+    mesh "$work/$side" "$program" "$switches -j$threads" "$name"
+    if [ -n "$area" ] && [ -f "$work/$side/$base.1.ele" ]; then
+      awk 'NR == 1 { print $1; next } /^#/ { next } { print $1, (NR % 2 ? -1 : 1) * 0.5 * '"$area"' }' \
+        "$work/$side/$base.1.ele" >"$work/$side/$base.1.area"
+      mesh "$work/$side" "$program" "-rpq30a -j$threads" "$base.1"
+    fi
+  done
+  compare "$name $switches -j$threads"
+}
+
+for input in "${inputs[@]}"; do
+  name=$(basename "$input")
   case $name in
     *.poly) sets=("${poly_sets[@]}" "-pq20u") ;;
     *) sets=("${node_sets[@]}") ;;
@@ -65,23 +89,9 @@ for input in "${inputs[@]}"; do
   for set in "${sets[@]}"; do
     switches=${set//AREA/$area}
     [ "$set" = "-pq20u" ] && switches="-pq20 --unsuitable $work/grading.so"
-    for threads in 1 2; do
-      for side in old new; do
-        rm -rf "${work:?}/$side"
-        mkdir -p "$work/$side"
-        cp "$input" "$work/$side/"
-        program=$old
-        [ $side = new ] && program=$new
-        mesh "$work/$side" "$program" "$switches -j$threads" "$name"
-        # -r: refine the first mesh again, with an .area file.
-        if [ "$set" = "-paAREA" ] && [ -f "$work/$side/$base.1.ele" ]; then
-          awk 'NR == 1 { print $1; next } /^#/ { next } { print $1, (NR % 2 ? -1 : 1) * 0.5 * '"$area"' }' \
-            "$work/$side/$base.1.ele" >"$work/$side/$base.1.area"
-          mesh "$work/$side" "$program" "-rpq30a -j$threads" "$base.1"
-        fi
-      done
-      compare "$name $switches -j$threads"
-    done
+    refine_area=""
+    [ "$set" = "-paAREA" ] && refine_area=$area
+    for threads in 1 2; do both "$input" "$switches" "$threads" "$refine_area"; done
   done
 done
 # Larger meshes, where the quadtree's leaves split and many rounds run: the
@@ -95,20 +105,9 @@ large=("pipe.poly|-pq20 --unsuitable $work/graded.so" "flow.poly|-pq30a2e-4"
   "flow.poly|-pq33a5e-4 -e -n" "pipe.poly|-pq25a2" "random.node|-e" "random.node|-q")
 for run in "${large[@]}"; do
   name=${run%%|*}
-  switches=${run#*|}
   source_file=$root/poly-samples/$name
   [ "$name" = random.node ] && source_file=$work/random.node
-  for threads in 1 2; do
-    for side in old new; do
-      rm -rf "${work:?}/$side"
-      mkdir -p "$work/$side"
-      cp "$source_file" "$work/$side/"
-      program=$old
-      [ $side = new ] && program=$new
-      mesh "$work/$side" "$program" "$switches -j$threads" "$name"
-    done
-    compare "$name $switches -j$threads"
-  done
+  for threads in 1 2; do both "$source_file" "${run#*|}" "$threads"; done
 done
 echo "compare-builds: $runs runs, $differ with different files ($old against $new)"
 [ "$differ" -eq 0 ]

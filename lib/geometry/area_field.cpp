@@ -29,35 +29,10 @@ AreaField::AreaField(std::span<const Point> points, std::span<const std::uint32_
             lo_ = {std::min(lo_.x, p.x), std::min(lo_.y, p.y)};
             hi_ = {std::max(hi_.x, p.x), std::max(hi_.y, p.y)};
         }
-    // About one cell per triangle, square where the box allows.  Every
-    // bounded triangle has an area, so the box has both a width and a height.
-    const double w = hi_.x - lo_.x, h = hi_.y - lo_.y;
-    const double side = std::sqrt(w * h / static_cast<double>(triangles_.size()));
-    columns_ = std::clamp(static_cast<long>(std::ceil(w / side)), 1L, 1L << 16);
-    rows_ = std::clamp(static_cast<long>(std::ceil(h / side)), 1L, 1L << 16);
-    width_ = w / static_cast<double>(columns_);
-    height_ = h / static_cast<double>(rows_);
-
-    // Two passes: count each cell's members, then fill them in.
-    const std::size_t cells = static_cast<std::size_t>(columns_) * static_cast<std::size_t>(rows_);
-    offsets_.assign(cells + 1, 0);
-    for (const Bounded& t : triangles_)
-        for_each_cell_of(t, [&](std::size_t c) { ++offsets_[c + 1]; });
-    for (std::size_t c = 0; c < cells; ++c) offsets_[c + 1] += offsets_[c];
-    members_.resize(offsets_[cells]);
-    std::vector<std::size_t> fill(offsets_.begin(), offsets_.end() - 1);
-    for (std::uint32_t i = 0; i < triangles_.size(); ++i)
-        for_each_cell_of(triangles_[i], [&](std::size_t c) { members_[fill[c]++] = i; });
-}
-
-long AreaField::column(double x) const {
-    const double c = std::floor((x - lo_.x) / width_);
-    return c < 0 ? 0 : c >= static_cast<double>(columns_) ? columns_ - 1 : static_cast<long>(c);
-}
-
-long AreaField::row(double y) const {
-    const double r = std::floor((y - lo_.y) / height_);
-    return r < 0 ? 0 : r >= static_cast<double>(rows_) ? rows_ - 1 : static_cast<long>(r);
+    // About one cell per triangle, square where the box allows.
+    grid_ = CellGrid(lo_, hi_, triangles_.size(), 1L << 16);
+    lists_.build(grid_.cell_count(), triangles_.size(),
+                 [&](std::size_t i, auto&& visit) { for_each_cell_of(triangles_[i], visit); });
 }
 
 // Row by row.  row() only grows with y, so the rows from the triangle's
@@ -69,11 +44,11 @@ long AreaField::row(double y) const {
 template <class F>
 void AreaField::for_each_cell_of(const Bounded& t, F&& visit) const {
     const Point* corner[3] = {&t.a, &t.b, &t.c};
-    const long r0 = row(std::min({t.a.y, t.b.y, t.c.y}));
-    const long r1 = row(std::max({t.a.y, t.b.y, t.c.y}));
+    const long r0 = grid_.row(std::min({t.a.y, t.b.y, t.c.y}));
+    const long r1 = grid_.row(std::max({t.a.y, t.b.y, t.c.y}));
     for (long r = r0; r <= r1; ++r) {
-        const double y0 = lo_.y + (static_cast<double>(r) - 0.5) * height_;
-        const double y1 = y0 + 2 * height_;
+        const double y0 = grid_.lo.y + (static_cast<double>(r) - 0.5) * grid_.height;
+        const double y1 = y0 + 2 * grid_.height;
         double x0 = std::numeric_limits<double>::infinity(), x1 = -x0;
         for (int k = 0; k < 3; ++k) {
             const Point& a = *corner[k];
@@ -88,9 +63,9 @@ void AreaField::for_each_cell_of(const Bounded& t, F&& visit) const {
             x0 = std::min({x0, xa, xb});
             x1 = std::max({x1, xa, xb});
         }
-        const long c0 = std::max(0L, column(x0) - 1), c1 = std::min(columns_ - 1, column(x1) + 1);
-        const std::size_t base = static_cast<std::size_t>(r) * static_cast<std::size_t>(columns_);
-        for (long c = c0; c <= c1; ++c) visit(base + static_cast<std::size_t>(c));
+        const long c0 = std::max(0L, grid_.column(x0) - 1);
+        const long c1 = std::min(grid_.columns - 1, grid_.column(x1) + 1);
+        for (long c = c0; c <= c1; ++c) visit(grid_.cell(r, c));
     }
 }
 
@@ -98,10 +73,8 @@ AreaField::Bound AreaField::at(const Point& p) const {
     Bound best;
     if (triangles_.empty() || !(p.x >= lo_.x && p.x <= hi_.x && p.y >= lo_.y && p.y <= hi_.y))
         return best;  // outside every bounded triangle (NaN too)
-    const std::size_t c = static_cast<std::size_t>(row(p.y)) * static_cast<std::size_t>(columns_) +
-                          static_cast<std::size_t>(column(p.x));
-    for (std::size_t k = offsets_[c]; k < offsets_[c + 1]; ++k) {
-        const Bounded& t = triangles_[members_[k]];
+    for (const std::uint32_t member : lists_.cell(grid_.cell_of(p))) {
+        const Bounded& t = triangles_[member];
         // Ties go to the earlier triangle of the .ele, so that a message
         // names the same one every time.
         if (t.bound > best.area || (t.bound == best.area && t.index > best.triangle)) continue;

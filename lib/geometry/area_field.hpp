@@ -35,6 +35,7 @@
 #include <span>
 #include <vector>
 
+#include "geometry/cell_grid.hpp"
 #include "geometry/point.hpp"
 
 namespace gpdr::geometry {
@@ -74,17 +75,13 @@ private:
         std::uint32_t index;  // in the .ele
     };
 
-    long column(double x) const;
-    long row(double y) const;
     template <class F>
     void for_each_cell_of(const Bounded& t, F&& visit) const;
 
     std::vector<Bounded> triangles_;
     Point lo_, hi_;
-    double width_ = 1, height_ = 1;  // of a cell
-    long columns_ = 1, rows_ = 1;
-    std::vector<std::size_t> offsets_;    // cell c lists members_[offsets_[c], offsets_[c + 1])
-    std::vector<std::uint32_t> members_;  // indices into triangles_
+    CellGrid grid_;
+    CellLists lists_;  // indices into triangles_
 };
 
 }  // namespace gpdr::geometry

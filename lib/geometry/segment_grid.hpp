@@ -8,13 +8,13 @@
 // them (one more ring), so a point within a fraction of a cell of a segment
 // finds it in the point's own cell even where rounding puts the point or the
 // segment's path one cell off.  Cells are square where the box allows, about
-// `target_cells` of them.  Lists are stored compactly (one index array and
-// one offset per cell), built in two passes.
+// `target_cells` of them (cell_grid.hpp).
 
 #include <cstdint>
 #include <span>
 #include <vector>
 
+#include "geometry/cell_grid.hpp"
 #include "geometry/point.hpp"
 
 namespace gpdr::geometry {
@@ -30,22 +30,15 @@ public:
     // cell outside the box).
     std::span<const std::uint32_t> near(const Point& p) const;
 
-    std::size_t cell_count() const { return offsets_.size() - 1; }
-    std::span<const std::uint32_t> cell(std::size_t c) const {
-        return {members_.data() + offsets_[c], members_.data() + offsets_[c + 1]};
-    }
+    std::size_t cell_count() const { return lists_.cell_count(); }
+    std::span<const std::uint32_t> cell(std::size_t c) const { return lists_.cell(c); }
 
 private:
     template <class F>
     void for_each_cell_of(const Point& a, const Point& b, F&& visit) const;
-    long column(double x) const;
-    long row(double y) const;
 
-    Point lo_;
-    double width_ = 1, height_ = 1;  // of a cell
-    long columns_ = 1, rows_ = 1;
-    std::vector<std::size_t> offsets_;
-    std::vector<std::uint32_t> members_;
+    CellGrid grid_;
+    CellLists lists_;
 };
 
 }  // namespace gpdr::geometry

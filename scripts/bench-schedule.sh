@@ -10,6 +10,20 @@
 #
 #   scripts/bench-schedule.sh
 #   GRADING_C=1e-3 SQUARE_AREA=1e-6 GRANULARITY="4 5" scripts/bench-schedule.sh
+#   SIMULATE=1 GRANULARITY=5 scripts/bench-schedule.sh
+#
+# SIMULATE=1 adds the simulation of the rounds across machines
+# (docs/scaling.md): the hidden test "[.simulate]" of the parallel layer's
+# test program (TEST_PARALLEL, default tests/test_parallel beside GPDR)
+# refines the same two inputs at each granularity of SIMULATE_GRANULARITY
+# (default 5) with the rounds recorded, and prints, for R = 4, 16 and 64
+# ranks owning the leaves in ranges of their Morton order that hold equal
+# numbers of triangles: the share of each round's buffer-zone triangles
+# that another rank owns than the leaf's, each round's balance (the largest
+# rank's work over the mean), the triangles fetched from other ranks per
+# triangle made, and the speed-up the ranks' supersteps allow against the
+# one the rounds allow as many threads.  Its inputs are made in memory: the
+# pipe read by the test, the square the same as here.
 #
 # The figures count triangles, not seconds: they are the same on any
 # machine and for any -jN (the rounds do not depend on the threads), so
@@ -48,4 +62,18 @@ for g in $granularities; do
 done
 for g in $granularities; do
   row "unit square, -a$area" "$g" square.poly "pq30a$area"
+done
+
+[ -n "${SIMULATE:-}" ] || exit 0
+test_parallel=${TEST_PARALLEL:-$(dirname "$GPDR")/tests/test_parallel}
+echo
+first=yes
+for g in ${SIMULATE_GRANULARITY:-5}; do
+  log="$BENCH_DIR/simulate.log"
+  GPDR_SIMULATE_C=$c GPDR_SIMULATE_AREA=$area GPDR_SIMULATE_G=$g \
+    "$test_parallel" "[.simulate]" >"$log" 2>&1 || {
+    echo "simulation -g$g failed: $(tail -3 "$log")"; continue; }
+  # The table's rows; its header once.
+  awk -v first="$first" '/^\| input/ || /^\|---/ { if (first == "yes") print; next } /^\|/' "$log"
+  first=no
 done

@@ -124,6 +124,30 @@ void merge_lanes(mesh::Mesh& mesh, const refine::RefineRun& run,
     refine::count_left(mesh, run, std::move(given_up), report.refine, threads);
 }
 
+// Schedule::record: before each round runs, its leaves, their triangles and
+// its buffer zones go to report.record (round_record.hpp).
+std::function<void(const std::vector<NodeId>&)> round_recorder(const mesh::Mesh& mesh,
+                                                               const Quadtree& tree,
+                                                               const Scheduler& scheduler,
+                                                               ParallelReport& report) {
+    // (The objects, not this function's references to them, are captured.)
+    return [m = &mesh, t = &tree, s = &scheduler, r = &report](const std::vector<NodeId>& round) {
+        r->record.push_back(
+            record_round(*m, *t, round, [s](std::size_t i) -> const std::vector<NodeId>& {
+                return s->zone(static_cast<int>(i));
+            }));
+    };
+}
+
+// The recorded runs' work, from the rounds' own record of it.
+void record_work(ParallelReport& report) {
+    for (std::size_t i = 0; i < report.record.size() && i < report.rounds.size(); ++i) {
+        std::vector<RecordedRun>& runs = report.record[i].runs;
+        for (std::size_t j = 0; j < runs.size() && j < report.rounds[i].size(); ++j)
+            runs[j].work = report.rounds[i][j];
+    }
+}
+
 // Rounds over the quadtree on schedule.threads threads.
 void refine_in_rounds(mesh::Mesh& mesh, refine::RefineSettings settings, const Schedule& schedule,
                       ParallelReport& report) {
@@ -149,8 +173,12 @@ void refine_in_rounds(mesh::Mesh& mesh, refine::RefineSettings settings, const S
                 report.problems.push_back(
                     "a worker counted a triangle in a leaf outside its buffer zone");
     };
-    run_rounds(lanes, scheduler, schedule.threads, schedule.checked, report, failure, check);
+    const auto record = schedule.record ? round_recorder(mesh, tree, scheduler, report)
+                                        : std::function<void(const std::vector<NodeId>&)>{};
+    run_rounds(lanes, scheduler, schedule.threads, schedule.checked, report, failure, check,
+               record);
     if (failure) std::rethrow_exception(failure);
+    if (schedule.record) record_work(report);
 
     clock.lap();
     report.serialised = scheduler.serial();

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "mesh/mesh.hpp"
+#include "parallel/round_record.hpp"
 #include "parallel/schedule.hpp"
 #include "refine/refine.hpp"
 
@@ -56,6 +57,10 @@ struct ParallelReport {
     // triangles its run created), in the round's order.  Empty for the
     // sequential schedule.
     std::vector<std::vector<std::uint64_t>> rounds;
+    // With Schedule::record: each round's leaves, their triangles and the
+    // buffer zones of the leaves it refined, with their work (as in
+    // `rounds`).  Empty otherwise.
+    ScheduleRecord record;
     // Checked mode: the invariant checks that failed (empty when all held).
     std::vector<std::string> problems;
     std::uint64_t checks = 0;  // quadtree verifications run (checked mode)

@@ -164,7 +164,8 @@ private:
 
 void run_rounds(std::vector<std::unique_ptr<Worker>>& lanes, Scheduler& scheduler, unsigned threads,
                 bool checked, ParallelReport& report, std::exception_ptr& failure,
-                const std::function<void()>& check) {
+                const std::function<void()>& check,
+                const std::function<void(const std::vector<NodeId>&)>& record) {
     const auto lane_total = static_cast<unsigned>(lanes.size());
     LaneThreads pool(lanes, std::min(threads, lane_total) - 1, failure, report.workers);
     Round round;
@@ -191,6 +192,7 @@ void run_rounds(std::vector<std::unique_ptr<Worker>>& lanes, Scheduler& schedule
             lanes[l]->pool().move_to_lane(lane);
         }
         report.master.managing += clock.lap();
+        if (record) record(round.leaves);  // (no one's time: the lap below drops it)
 
         pool.run(round);
 

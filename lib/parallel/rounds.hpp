@@ -44,11 +44,15 @@ inline constexpr unsigned lane_count = 64;
 
 // Runs rounds until no leaf has work, a lane stops (a limit) or fails (its
 // exception goes to `failure`), on `threads` threads: the calling thread and
-// threads - 1 more.  `check` runs after each round when `checked`.
+// threads - 1 more.  `check` runs after each round when `checked`;
+// `record`, when set, with the round's leaves once they are chosen and
+// before they run (Schedule::record); its time is left out of the calling
+// thread's (the other threads wait meanwhile).
 // Records each round's leaves' work in report.rounds.
 void run_rounds(std::vector<std::unique_ptr<Worker>>& lanes, Scheduler& scheduler, unsigned threads,
                 bool checked, ParallelReport& report, std::exception_ptr& failure,
-                const std::function<void()>& check);
+                const std::function<void()>& check,
+                const std::function<void(const std::vector<NodeId>&)>& record = {});
 
 // What the recorded rounds say of the schedule's parallelism, counting a
 // leaf's work as the triangles its run created (deterministic, unlike time).

@@ -50,6 +50,10 @@ struct Schedule {
     // the buffer zones' exclusivity whenever a leaf is handed out.
     // Failures go to ParallelReport::problems.  Slow.
     bool checked = false;
+    // Recording (tests): each round's leaves, buffer zones and triangles go
+    // to ParallelReport::record (round_record.hpp), for the simulation of
+    // refinement across machines.  One pass over the mesh per round.
+    bool record = false;
 
     static Schedule sequential(Why why, unsigned granularity = refine::default_granularity) {
         return {Kind::sequential, 1, granularity, why, false};

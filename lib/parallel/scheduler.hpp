@@ -89,6 +89,8 @@ public:
                   std::vector<Routed>& outbox, bool outgrew_root);
     // Work for a leaf outside the sender's zone.
     void deliver(const Routed& r);
+    // The buffer zone held for entry's leaf while the round runs (Schedule::record).
+    const std::vector<NodeId>& zone(int entry) const { return active_[entry].zone; }
     bool serial() const { return serial_; }
     void set_serial() { serial_ = true; }
 

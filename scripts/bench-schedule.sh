@@ -20,7 +20,8 @@
 # ranks owning the leaves in ranges of their Morton order that hold equal
 # numbers of triangles: the share of each round's buffer-zone triangles
 # that another rank owns than the leaf's, each round's balance (the largest
-# rank's work over the mean), the triangles fetched from other ranks per
+# rank's work over the mean), the triangles fetched from other ranks and
+# those that change ranks as the ranges follow the triangles, each per
 # triangle made, and the speed-up the ranks' supersteps allow against the
 # one the rounds allow as many threads.  Its inputs are made in memory: the
 # pipe read by the test, the square the same as here.

@@ -115,9 +115,27 @@ std::vector<RankRound> simulate_ranks(const ScheduleRecord& record, unsigned ran
     std::vector<RankRound> out;
     out.reserve(record.size());
     std::vector<std::uint64_t> rank_work(ranks);
+    // Where each rank's range began the round before (Morton codes; none
+    // before the first round).  Leaves only split, so each leaf lies in one
+    // leaf of the round before, and so in one range.
+    std::vector<std::uint64_t> starts;
     for (const RecordedRound& round : record) {
         const std::vector<std::uint32_t> owner = morton_owners(round, ranks);
         RankRound r;
+        for (std::size_t i = 0; i < round.leaves.size() && !starts.empty(); ++i) {
+            const std::uint64_t key = round.leaves[i].cell.morton();
+            const auto before = static_cast<std::uint32_t>(
+                std::upper_bound(starts.begin(), starts.end(), key) - starts.begin());
+            if (before != owner[i]) r.moved_triangles += round.leaves[i].triangles;
+        }
+        starts.assign(ranks, ~std::uint64_t{0});
+        starts[0] = 0;
+        for (std::size_t i = round.leaves.size(); i-- > 0;)
+            starts[owner[i]] = std::min(starts[owner[i]], round.leaves[i].cell.morton());
+        for (std::size_t k = ranks - 1; k-- > 0;) starts[k] = std::min(starts[k], starts[k + 1]);
+        // starts[k] is where rank k's range begins; the rank of a key is the
+        // number of ranges beginning at or before it, less one.
+        starts.erase(starts.begin());
         std::fill(rank_work.begin(), rank_work.end(), 0);
         for (const RecordedRun& run : round.runs) {
             const std::uint32_t mine = owner[run.leaf];
@@ -170,6 +188,7 @@ RankSummary summarise(const std::vector<RankRound>& rounds) {
     for (const RankRound& r : rounds) {
         s.work += r.work;
         s.remote += r.remote_triangles;
+        s.moved += r.moved_triangles;
         span += r.largest;
     }
     s.speedup = span == 0 ? 1.0 : double(s.work) / double(span);

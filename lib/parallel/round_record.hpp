@@ -78,6 +78,9 @@ struct RankRound {
     std::uint64_t zone_triangles = 0;    // in the runs' buffer zones, their leaves left out
     std::uint64_t remote_triangles = 0;  // of them, in leaves another rank owns than the run's
     double share = 0;                    // remote / zone triangles; 0 without zone triangles
+    // Triangles in leaves whose rank is not the one the round before gave
+    // their part of the Morton order (the ranges follow the triangles).
+    std::uint64_t moved_triangles = 0;
 };
 std::vector<RankRound> simulate_ranks(const ScheduleRecord& record, unsigned ranks);
 
@@ -90,6 +93,7 @@ struct RankSummary {
     RoundStatistic share, balance;
     std::uint64_t work = 0;
     std::uint64_t remote = 0;  // triangles fetched from other ranks, over all rounds
+    std::uint64_t moved = 0;   // triangles that changed ranks between rounds
     // work / the sum over rounds of the largest rank's work: the speed-up
     // the supersteps allow the ranks, communication aside.
     double speedup = 1;

@@ -76,6 +76,16 @@ TEST_CASE("ranks by Morton order: shares and balance of a round made by hand",
     CHECK(s.balance.median == Approx(6.0 / 2.0));
     CHECK(s.work == 16);
     CHECK(s.speedup == Approx(16.0 / 12.0));
+    CHECK(s.moved == 0);  // the same triangles, the same ranges
+
+    // More triangles in leaf 0: two ranks of 90 now, whose middles lie at
+    // 45, 105, 140 and 170: leaf 1 moves from rank 0 to rank 1.
+    RecordedRound later = round;
+    later.leaves[0].triangles = 90;
+    CHECK(morton_owners(later, 2) == std::vector<std::uint32_t>{0, 1, 1, 1});
+    const std::vector<RankRound> moved = simulate_ranks({round, later}, 2);
+    CHECK(moved[0].moved_triangles == 0);
+    CHECK(moved[1].moved_triangles == 30);
 }
 
 TEST_CASE("the recorded rounds hold each round's leaves, zones and work", "[parallel][simulate]") {
@@ -157,6 +167,7 @@ TEST_CASE("the recorded rounds hold each round's leaves, zones and work", "[para
             if (ranks == 1) {
                 CHECK(rounds[r].share == 0);
                 CHECK(rounds[r].balance == 1);
+                CHECK(rounds[r].moved_triangles == 0);
             }
         }
         const RankSummary sum = summarise(rounds);
@@ -314,9 +325,10 @@ void simulate(const std::string& label, const triangulate::Pslg& p, const refine
     for (const unsigned ranks : {4u, 16u, 64u}) {
         const RankSummary sum = summarise(simulate_ranks(report.record, ranks));
         std::printf(
-            "| %s | %zu | %zu | %u | %s | %s | %s | %s / %s |\n", label.c_str(), triangles,
+            "| %s | %zu | %zu | %u | %s | %s | %s | %s | %s / %s |\n", label.c_str(), triangles,
             report.record.size(), ranks, three(sum.share, 2).c_str(), three(sum.balance, 1).c_str(),
-            fixed(double(sum.remote) / double(sum.work), 2).c_str(), fixed(sum.speedup, 1).c_str(),
+            fixed(double(sum.remote) / double(sum.work), 2).c_str(),
+            fixed(double(sum.moved) / double(sum.work), 2).c_str(), fixed(sum.speedup, 1).c_str(),
             fixed(predicted_speedup(report.rounds, ranks), 1).c_str());
     }
     print_ids(label + ", rounds", m);
@@ -332,7 +344,8 @@ TEST_CASE("simulated ranks: buffer zones across ranks and balance, graded pipe a
     std::printf(
         "| input | triangles | rounds | ranks | zone triangles on another rank: median / "
         "weighted / worst | balance: median / weighted / worst | fetched per triangle made | "
-        "speed-up: ranks / threads |\n|---|---:|---:|---:|---|---|---:|---|\n");
+        "moved per triangle made | speed-up: ranks / threads |\n"
+        "|---|---:|---:|---:|---|---|---:|---:|---|\n");
 
     const triangulate::Pslg pipe =
         refine::testing::read_poly(std::string(GPDR_SOURCE_DIR) + "/poly-samples/pipe.poly");

@@ -1,12 +1,12 @@
 // The "Mesh quality statistics" block that -V prints, in Triangle's layout:
 // extreme areas, edge lengths, altitudes and aspect ratios, and histograms of
 // aspect ratio (longest edge over shortest altitude) and of all angles;
-// taken over runs of triangles, on several threads when asked (the graded
-// pipe's 15 million triangles took 1.3 s on one).
+// taken over runs of triangles, on several threads when asked.
 
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -26,14 +26,72 @@ constexpr std::array<double, 16> ratio_bounds{
     1.5, 2,  2.5, 3,   4,    6,     10,     15,
     25,  50, 100, 300, 1000, 10000, 100000, std::numeric_limits<double>::infinity()};
 
+// An angle in degrees from its cosine, as the statistics report it.
+double degrees_of(double cosine) { return std::acos(cosine) * 180 / std::numbers::pi; }
+
+// The angle histogram's bin of a cosine: the bin of its angle,
+// min(17, floor(degrees / 10)), found without an arc cosine (three per
+// triangle were most of the block's time).  The bin only falls as the
+// cosine grows, so it is the number of thresholds at or above the cosine,
+// threshold k being the largest cosine whose angle is in bin k or above,
+// found once by bisection over the doubles of [-1, 1] with the very
+// function that defines the bins: every cosine gets the bin its angle did.
+class AngleBins {
+public:
+    AngleBins() {
+        for (std::size_t k = 1; k < 18; ++k) {
+            // Bisection over the ordered bit patterns of [-1, 1] (a double's
+            // order is its bit pattern's, sign apart).
+            double lo = -1, hi = 1;  // bin(lo) >= k, bin(hi) < k
+            while (std::nextafter(lo, hi) != hi) {
+                const double mid = middle(lo, hi);
+                if (bin_by_angle(mid) >= k)
+                    lo = mid;
+                else
+                    hi = mid;
+            }
+            threshold_[k - 1] = lo;
+        }
+    }
+    std::size_t bin(double cosine) const {
+        std::size_t b = 0;
+        while (b < 17 && cosine <= threshold_[b]) ++b;
+        return b;
+    }
+
+private:
+    static std::size_t bin_by_angle(double cosine) {
+        return std::min<std::size_t>(17, static_cast<std::size_t>(degrees_of(cosine) / 10));
+    }
+    // A double between lo < hi, halving the count of doubles between them.
+    static double middle(double lo, double hi) {
+        const auto ordered = [](double x) {
+            const auto bits = std::bit_cast<std::int64_t>(x);
+            return bits < 0 ? std::numeric_limits<std::int64_t>::min() - bits : bits;
+        };
+        const auto unordered = [](std::int64_t o) {
+            return std::bit_cast<double>(o < 0 ? std::numeric_limits<std::int64_t>::min() - o : o);
+        };
+        const std::int64_t a = ordered(lo), b = ordered(hi);
+        return unordered(a + (b - a) / 2);
+    }
+    std::array<double, 17> threshold_{};  // falling: threshold_[k - 1] for bin k
+};
+
+const AngleBins& angle_bins() {
+    static const AngleBins bins;
+    return bins;
+}
+
 // The figures of a set of triangles; two tallies merge into the tally of
 // both sets (extremes and counts only: the result does not depend on how
-// the triangles were shared out, or in what order).
+// the triangles were shared out, or in what order).  Angles are kept as
+// their cosines: the smallest angle has the largest.
 struct Tally {
     double min_area = std::numeric_limits<double>::infinity(), max_area = 0;
     double min_edge2 = std::numeric_limits<double>::infinity(), max_edge2 = 0;
     double min_altitude = std::numeric_limits<double>::infinity(), max_ratio = 0;
-    double min_angle = 180, max_angle = 0;
+    double max_cosine = -1, min_cosine = 1;
     std::array<std::uint64_t, 16> ratio_histogram{};
     std::array<std::uint64_t, 18> angle_histogram{};
 
@@ -59,14 +117,14 @@ struct Tally {
         std::size_t bin = 0;
         while (bin + 1 < ratio_bounds.size() && ratio > ratio_bounds[bin]) ++bin;
         ++ratio_histogram[bin];
+        const AngleBins& bins = angle_bins();
         for (std::size_t k = 0; k < 3; ++k) {
             // The angle at corner k lies between the edges opposite k+1 and k+2.
             const double a2 = edge2[(k + 1) % 3], b2 = edge2[(k + 2) % 3], c2 = edge2[k];
             const double cosine = std::clamp((a2 + b2 - c2) / (2 * std::sqrt(a2 * b2)), -1.0, 1.0);
-            const double degrees = std::acos(cosine) * 180 / std::numbers::pi;
-            min_angle = std::min(min_angle, degrees);
-            max_angle = std::max(max_angle, degrees);
-            ++angle_histogram[std::min<std::size_t>(17, static_cast<std::size_t>(degrees / 10))];
+            max_cosine = std::max(max_cosine, cosine);
+            min_cosine = std::min(min_cosine, cosine);
+            ++angle_histogram[bins.bin(cosine)];
         }
     }
 
@@ -77,8 +135,8 @@ struct Tally {
         max_edge2 = std::max(max_edge2, o.max_edge2);
         min_altitude = std::min(min_altitude, o.min_altitude);
         max_ratio = std::max(max_ratio, o.max_ratio);
-        min_angle = std::min(min_angle, o.min_angle);
-        max_angle = std::max(max_angle, o.max_angle);
+        max_cosine = std::max(max_cosine, o.max_cosine);
+        min_cosine = std::min(min_cosine, o.min_cosine);
         for (std::size_t i = 0; i < ratio_histogram.size(); ++i)
             ratio_histogram[i] += o.ratio_histogram[i];
         for (std::size_t i = 0; i < angle_histogram.size(); ++i)
@@ -132,8 +190,8 @@ void tally(const Chunk& chunk, const std::vector<double>& xy, Tally& into) {
 
 // With several threads: each thread claims runs of triangles in turn,
 // reads them from the source itself (read() serves any run, from any
-// thread) and tallies them.  Three arc cosines per triangle cost far more
-// than reading, but on one thread the reading alone held back the others.
+// thread) and tallies them: on one thread the reading alone held back the
+// others.
 Tally tally_in_parallel(const io::EleSource& source, const std::vector<double>& xy,
                         unsigned threads, std::size_t chunk_size) {
     const std::uint32_t nc = source.corners_per_triangle;
@@ -173,15 +231,16 @@ std::vector<std::string> quality_statistics(const MeshArrays& mesh, unsigned thr
     io::EleSource triangles = triangle_source(mesh);
     const auto& xy = mesh.nodes.xy;
     Tally t;
-    if (threads > 1 && triangles.count > chunk_size && triangles.read) {
+    if (triangles.read) {
         t = tally_in_parallel(triangles, xy, threads, chunk_size);
     } else {
         Chunk chunk;
         std::size_t left = triangles.count;
         while (fill(triangles, left, chunk_size, chunk)) tally(chunk, xy, t);
     }
-    const auto& [min_area, max_area, min_edge2, max_edge2, min_altitude, max_ratio, min_angle,
-                 max_angle, ratio_histogram, angle_histogram] = t;
+    const auto& [min_area, max_area, min_edge2, max_edge2, min_altitude, max_ratio, max_cosine,
+                 min_cosine, ratio_histogram, angle_histogram] = t;
+    const double min_angle = degrees_of(max_cosine), max_angle = degrees_of(min_cosine);
     if (triangles.count == 0) return {};
 
     std::vector<std::string> lines;

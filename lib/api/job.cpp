@@ -76,6 +76,7 @@ struct Meshed {
 // -C: the mesh on its own (topology, orientation, constrained Delaunay),
 // then against the input geometry and the bounds asked for (those refinement
 // was asked to meet and did not give up on; none when a limit stopped it).
+// An angle bound out of reach (above 34 degrees) is a problem in itself.
 std::vector<std::string> check(const Options& options, int base,
                                const mesh::InputGeometry& geometry, const api::Triangulated& tri,
                                const std::optional<api::Refinement>& refinement) {
@@ -85,10 +86,22 @@ std::vector<std::string> check(const Options& options, int base,
     std::vector<std::string> problems = mesh::check_mesh(tri.mesh, own);
     mesh::InputCheckOptions against;
     against.base = base;
-    if (refinement && refinement->report.refine.stopped == refine::RefineReport::Stop::none) {
+    using Stop = refine::RefineReport::Stop;
+    // The mesh handed back for a bound out of reach is held to the bound it
+    // was refined to.
+    const bool out_of_reach =
+        refinement && refinement->report.refine.stopped == Stop::not_converging;
+    if (out_of_reach)
+        problems.push_back(fmt::format(
+            "the minimum angle of {} degrees was not met: refinement did not converge, and the "
+            "mesh reached {:.1f} degrees",
+            options.min_angle, refinement->report.refine.angle_reached));
+    if (refinement && (refinement->report.refine.stopped == Stop::none || out_of_reach)) {
         const refine::RefineReport& refined = refinement->report.refine;
         const refine::UserTest& user_test = refinement->user_test;
-        against.min_angle = options.quality ? options.min_angle : 0;
+        against.min_angle = !options.quality ? 0
+                            : out_of_reach   ? refined.angle_refined
+                                             : options.min_angle;
         against.max_area = options.area_limit ? options.max_area : 0;
         against.regional_area = options.regional_area && !options.refine;
         against.area_field = true;  // when the input had an .area file

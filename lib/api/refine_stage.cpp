@@ -3,8 +3,11 @@
 // choose (parallel/schedule.hpp), and what its report means to the user
 // (warnings, -V lines).
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <optional>
+#include <vector>
 
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -19,7 +22,11 @@
 #include "api/memory_estimate.hpp"
 #include "parallel/refine_parallel.hpp"
 #include "parallel/rounds.hpp"
+#include "parallel/stopwatch.hpp"
+#include "refine/convergence.hpp"
+#include "refine/mesh_copy.hpp"
 #include "refine/refine.hpp"
+#include "refine/star_placement.hpp"
 
 namespace gpdr::api {
 
@@ -66,15 +73,6 @@ refine::RefineSettings refine_settings(const Options& o, const JobPlugins& plugi
     return s;
 }
 
-void warn_before_refinement(const Options& o, const WarningSink& warn) {
-    if (o.quality && o.min_angle > 34.0)
-        warn(Warning{
-            "", 0,
-            fmt::format("a minimum angle of {} degrees may be out of reach (Triangle's refinement "
-                        "usually works up to about 34); gpdr stops with a valid mesh if it is",
-                        o.min_angle)});
-}
-
 // While it lives, the progress line shows the vertices refinement adds: the
 // refining threads count them in one atomic, in batches, so reading it from
 // the program's thread costs them nothing.  (The mesh's vertex ids are no
@@ -102,8 +100,16 @@ private:
     std::atomic<std::uint64_t> added_{0};
 };
 
-void warn_after_refinement(const refine::RefineReport& r, const WarningSink& warn) {
+void warn_after_refinement(const Options& o, const refine::RefineReport& r,
+                           const WarningSink& warn) {
     using Stop = refine::RefineReport::Stop;
+    if (r.stopped == Stop::not_converging)
+        warn(Warning{"", 0,
+                     fmt::format("a minimum angle of {} degrees is out of reach for this input: "
+                                 "refinement did not converge (it split ever smaller triangles), "
+                                 "so the mesh is the one refined to {} degrees; it reached {:.1f} "
+                                 "degrees of {} (apart from small input angles)",
+                                 o.min_angle, r.angle_refined, r.angle_reached, o.min_angle)});
     if (r.stopped == Stop::steiner_limit)
         warn(Warning{
             "", 0,
@@ -146,6 +152,145 @@ void trim_freed_memory() {
 #endif
 }
 
+// ---- above 34 degrees ---------------------------------------------------------
+//
+// Refinement above 34 degrees may not end (refine/convergence.hpp), and
+// whether it ends depends on where the Steiner points go as much as on the
+// input.  So the asked bound is tried with each placement of -P1 in turn
+// (refine/star_placement.hpp), each on a copy of the constrained Delaunay
+// mesh, until one ends with the bound met.  If none does, the bound is out
+// of reach, and the mesh handed back is the best one found below it: the
+// 34-degree mesh (or, when even that does not end, the largest bound of
+// `floor_angles` that ends), then bounds halfway between the best that ended
+// and the lowest that did not, down to a step of `angle_step`, each tried
+// with every placement within a budget of 10 times the floor mesh's
+// triangles.  A try that does not converge stops within thousands of
+// Steiner points, so the tries that fail cost little.
+
+constexpr double floor_angles[] = {34.0, 33.0, 32.0, 30.0, 27.0, 24.0, 20.0};
+constexpr double angle_step = 0.25;
+constexpr std::uint64_t growth_allowed = 10;  // triangles, against the floor mesh's
+
+struct Try {
+    mesh::Mesh mesh;
+    parallel::ParallelReport report;
+    double angle = 0;
+    bool ended() const {
+        return report.refine.stopped == refine::RefineReport::Stop::none &&
+               report.refine.left_precision == 0;
+    }
+};
+
+// Refines a copy of `cdt` with the bound `angle`, `strategy` (nullptr: the
+// built-in one) and at most `budget` Steiner points (0: the safety limit),
+// stopping when it cascades unless `watch` is false.  Appends what it did to
+// `tries`.
+Try try_bound(mesh::Mesh& cdt, refine::RefineSettings s, const parallel::Schedule& schedule,
+              double angle, const refine::PlacementStrategy* strategy, std::uint64_t budget,
+              std::vector<refine::RefineReport::Try>& tries, bool watch = true) {
+    parallel::Stopwatch clock;
+    Try t{refine::copy_mesh(cdt), {}, angle};
+    s.criteria.min_angle_degrees = angle;
+    s.strategy = strategy;
+    s.safety_limit = budget;
+    s.watch_convergence = watch;
+    if (s.steiner_counter != nullptr) s.steiner_counter->store(0, std::memory_order_relaxed);
+    parallel::refine_parallel(t.mesh, s, schedule, t.report);
+    const refine::RefineReport& r = t.report.refine;
+    tries.push_back({angle,
+                     strategy != nullptr ? strategy->name()
+                                         : refine::builtin_placement(s.placement, angle).name(),
+                     r.stopped, r.steiner_points, r.left_precision, clock.lap()});
+    return t;
+}
+
+// The placements tried for `angle`: each of -P1's above 34 degrees, else
+// the one the options ask for.
+std::vector<const refine::PlacementStrategy*> placements_for(const Options& o, double angle) {
+    if (o.placement == Placement::off_centre && angle > refine::star_placement_above) {
+        const auto all = refine::star_placements();
+        return {all.begin(), all.end()};
+    }
+    return {nullptr};
+}
+
+// The first try at `angle` that ends with its bound met, with each placement.
+std::optional<Try> try_each_placement(const Options& o, mesh::Mesh& cdt,
+                                      const refine::RefineSettings& s,
+                                      const parallel::Schedule& schedule, double angle,
+                                      std::uint64_t budget,
+                                      std::vector<refine::RefineReport::Try>& tries) {
+    for (const refine::PlacementStrategy* strategy : placements_for(o, angle)) {
+        Try t = try_bound(cdt, s, schedule, angle, strategy, budget, tries);
+        if (t.ended()) return t;
+    }
+    return std::nullopt;
+}
+
+// The best mesh below the asked bound (see above), its report saying so.
+Try best_below(const Options& o, mesh::Mesh& cdt, const refine::RefineSettings& s,
+               const parallel::Schedule& schedule, std::vector<refine::RefineReport::Try>& tries) {
+    std::optional<Try> best;
+    for (const double angle : floor_angles) {
+        if (angle >= o.min_angle) continue;
+        best = try_each_placement(o, cdt, s, schedule, angle, 0, tries);
+        if (best) break;
+    }
+    if (!best)  // the lowest, unwatched, as below 34 degrees (the safety limit's warning)
+        return try_bound(cdt, s, schedule, floor_angles[std::size(floor_angles) - 1], nullptr, 0,
+                         tries, false);
+    const std::uint64_t floor_triangles = best->mesh.count_triangles();
+    const std::uint64_t start = cdt.count_triangles();
+    // A vertex inside makes two triangles, one on a segment one: half the
+    // allowed growth in Steiner points keeps within it.
+    const std::uint64_t budget = std::max<std::uint64_t>(
+        1,
+        (growth_allowed * floor_triangles - std::min(growth_allowed * floor_triangles, start)) / 2);
+    double low = best->angle, high = o.min_angle;
+    while (high - low > angle_step) {
+        const double middle = std::round((low + high) / 2 * 100) / 100;
+        if (std::optional<Try> t = try_each_placement(o, cdt, s, schedule, middle, budget, tries)) {
+            best = std::move(t);
+            low = middle;
+        } else {
+            high = middle;
+        }
+    }
+    best->report.refine.stopped = refine::RefineReport::Stop::not_converging;
+    best->report.refine.angle_refined = best->angle;
+    best->report.refine.angle_reached = refine::smallest_angle_degrees(best->mesh);
+    return std::move(*best);
+}
+
+// Refinement with a bound above 34 degrees (see above).
+void refine_above_34(const Options& o, Triangulated& tri, const refine::RefineSettings& s,
+                     Refinement& r) {
+    mesh::Mesh cdt = refine::copy_mesh(tri.mesh);
+    std::vector<refine::RefineReport::Try> tries;
+    std::optional<Try> done = try_each_placement(o, cdt, s, r.schedule, o.min_angle, 0, tries);
+    if (!done) done = best_below(o, cdt, s, r.schedule, tries);
+    tri.mesh = std::move(done->mesh);
+    r.report = std::move(done->report);
+    r.report.refine.tries = std::move(tries);
+}
+
+// What became of a try, for -V.
+std::string try_outcome(const refine::RefineReport::Try& t) {
+    using Stop = refine::RefineReport::Stop;
+    switch (t.stopped) {
+        case Stop::none:
+            return t.left_precision == 0 ? "ended, bound met"
+                                         : "ended, triangles left for precision";
+        case Stop::not_converging:
+            return "not converging";
+        case Stop::safety_limit:
+            return "stopped by its budget";
+        case Stop::steiner_limit:
+            return "stopped by -S";
+    }
+    return "";
+}
+
 }  // namespace
 
 Refinement refine_stage(const Options& options, const JobPlugins& plugins, const Input& input,
@@ -159,7 +304,6 @@ Refinement refine_stage(const Options& options, const JobPlugins& plugins, const
     const std::uint64_t added = tri.steiner_points + tri.cdt_report.new_vertices.size();
     if (settings.steiner_limit)
         settings.max_steiner = settings.max_steiner > added ? settings.max_steiner - added : 0;
-    warn_before_refinement(options, warn);
     refuse_beyond_memory(
         options, estimate_memory(options, tri.mesh, settings, input.nodes.data.attribute_count),
         memory_available());
@@ -169,15 +313,24 @@ Refinement refine_stage(const Options& options, const JobPlugins& plugins, const
     r.user_test = settings.criteria.user_test;
     {
         const ProgressWatch watch(progress, tri.mesh, settings);
-        parallel::refine_parallel(tri.mesh, settings, r.schedule, r.report);
+        // (-S caps the whole run: one try, as below 34 degrees.)
+        if (options.quality && options.min_angle > refine::watched_above && !options.steiner_limit)
+            refine_above_34(options, tri, settings, r);
+        else
+            parallel::refine_parallel(tri.mesh, settings, r.schedule, r.report);
     }
     trim_freed_memory();
-    warn_after_refinement(r.report.refine, warn);
+    warn_after_refinement(options, r.report.refine, warn);
     return r;
 }
 
 std::vector<std::string> refinement_lines(const Refinement& r) {
     std::vector<std::string> lines{"", r.schedule.describe()};
+    for (const refine::RefineReport::Try& t : r.report.refine.tries)
+        lines.push_back(
+            fmt::format("  tried {} degrees, placement {}: {} after {} Steiner points, "
+                        "{:.0f} ms",
+                        t.angle, t.placement, try_outcome(t), t.steiner_points, t.seconds * 1000));
     const parallel::ParallelReport& p = r.report;
     if (p.rounds.empty()) return lines;
     // The GPDR paper's Fig. 5 (right): where each thread's time went.

@@ -27,8 +27,13 @@ std::string Schedule::describe() const {
         case Why::steiner_limit:
             return fmt::format("{}: -S, whose limit is exact only there", one_thread);
         case Why::high_angle:
-            return fmt::format("{}: the angle bound is above {} degrees", one_thread,
-                               refine::max_quadtree_angle);
+            // Up to 34 degrees the leaves' order makes meshes larger or
+            // endless; above, where -P1 tries placements in turn, a try that
+            // will not end is caught only late in rounds (refine/order.hpp).
+            return fmt::format(
+                "{}: the angle bound is above {} degrees, where the quadtree's leaves change "
+                "whether refinement ends",
+                one_thread, refine::max_quadtree_angle);
     }
     return one_thread;
 }

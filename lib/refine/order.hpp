@@ -50,6 +50,11 @@
 //    order across leaves well enough for refinement to end with meshes of
 //    its size, and every thread count refines in order 1 on one thread
 //    (the schedule, parallel/schedule.hpp, asks quadtree_keeps_order).
+//    Above 34 degrees the star placement (star_placement.hpp) keeps the
+//    rounds' meshes near one thread's where a try ends, but a try that does
+//    not end grows in the rounds instead of cascading, and the cascade
+//    watch (convergence.hpp) catches it only late: one thread there too
+//    (docs/refinement-order.md, "Above 34 degrees").
 //
 // The rules are decided once per run (order_rules) and read as plain flags
 // where triangles are classified.

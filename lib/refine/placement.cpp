@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "mesh/insert.hpp"
+#include "refine/star_placement.hpp"
 
 namespace gpdr::refine {
 
@@ -147,7 +148,7 @@ Point OptimisationPlacement::place(const PoorTriangle& t, PlacementScratch& scra
     return best;
 }
 
-const PlacementStrategy& builtin_placement(Placement kind) {
+const PlacementStrategy& builtin_placement(Placement kind, double min_angle_degrees) {
     static const CircumcentrePlacement circumcentre;
     static const OffCentrePlacement off_centre;
     static const OptimisationPlacement optimisation;
@@ -159,6 +160,7 @@ const PlacementStrategy& builtin_placement(Placement kind) {
         case Placement::off_centre:
             break;
     }
+    if (min_angle_degrees > star_placement_above) return *star_placements()[0];
     return off_centre;
 }
 

@@ -21,6 +21,10 @@
 //                  triangle, +1 for a good one; the minimum wins, ties go to
 //                  the off-centre.  The cavity is found by a read-only search
 //                  from the poor triangle that never crosses a subsegment.
+//   star           -P1's above 34 degrees: the off-centre where the triangles
+//                  its insertion makes meet the bound, else a point between it
+//                  and the shortest edge whose new triangles do
+//                  (star_placement.hpp).
 //
 // Contract of place(): return an admissible point (admissible_point below):
 // strictly inside t.disk when the disk is not empty; when it is empty
@@ -110,8 +114,15 @@ private:
     int samples_;
 };
 
-// The built-in strategy for -P0/-P1/-P2 (stateless, shared by all threads).
-const PlacementStrategy& builtin_placement(Placement kind);
+// Above this angle bound, in degrees, -P1 (the default) places Steiner
+// points with StarPlacement (star_placement.hpp): the off-centre where its
+// new triangles meet the bound, else a better point near it.  At and below
+// it, the off-centre alone, as Triangle.
+inline constexpr double star_placement_above = 34.0;
+
+// The built-in strategy for -P0/-P1/-P2 with an angle bound of
+// min_angle_degrees (0: none); stateless, shared by all threads.
+const PlacementStrategy& builtin_placement(Placement kind, double min_angle_degrees = 0);
 
 // Whether p is strictly inside t.disk.
 inline bool in_selection_disk(const PoorTriangle& t, const geometry::Point& p) {

@@ -17,6 +17,7 @@
 #include "mesh/split_subsegment.hpp"
 #include "mesh/traverse.hpp"
 #include "refine/area_demand.hpp"
+#include "refine/convergence.hpp"
 #include "refine/segments.hpp"
 
 namespace gpdr::refine {
@@ -104,8 +105,10 @@ RefineRun::RefineRun(const mesh::Mesh& mesh, const RefineSettings& settings)
       settings_(settings),
       quality_(settings_.criteria, SegmentEnds{settings_.segment_ends}),
       order_(order_rules(quality_)),
-      strategy_(settings_.strategy != nullptr ? settings_.strategy
-                                              : &builtin_placement(settings_.placement)) {
+      strategy_(
+          settings_.strategy != nullptr
+              ? settings_.strategy
+              : &builtin_placement(settings_.placement, settings_.criteria.min_angle_degrees)) {
     double min_x = std::numeric_limits<double>::infinity(), max_x = -min_x, min_y = min_x,
            max_y = -min_x;
     std::uint64_t triangles = 0;
@@ -128,6 +131,7 @@ RefineRun::RefineRun(const mesh::Mesh& mesh, const RefineSettings& settings)
     });
     const double diameter = triangles == 0 ? 0.0 : std::hypot(max_x - min_x, max_y - min_y);
     tiny_length_squared_ = (diameter * tiny_fraction) * (diameter * tiny_fraction);
+    if (settings_.watch_convergence) cascade_floor_squared_ = refine::cascade_floor_squared(mesh);
 
     // The safety budget: far above what a terminating refinement needs (an
     // area bound needs about 2 area/bound triangles, one vertex per two
@@ -487,6 +491,15 @@ void LeafRefiner::insert_steiner_point(Leaf& leaf, const Point& p,
 
 void LeafRefiner::refine_triangle(Leaf& leaf, QueuedTriangle q, PoorSlot at) {
     const PoorTriangle t = describe_poor_triangle(mesh_, q.id, quality_);
+    // Far below the starting mesh's shortest edge, a triangle poor by its
+    // angle means refinement is cascading (convergence.hpp): stop, t kept.
+    const double shortest_squared = t.shortest_length * t.shortest_length;
+    if (shortest_squared < run_.cascade_floor_squared() &&
+        t.circle.radius_squared > t.rho_bar * t.rho_bar * shortest_squared) {
+        report_.stopped = RefineReport::Stop::not_converging;
+        leaf.push_poor(q, at);
+        return;
+    }
     const std::optional<Point> p = choose_point(leaf, q, t);
     if (!p) return;
     const std::optional<mesh::LocateResult> where = locate_point(leaf, q, at, *p);

@@ -106,10 +106,15 @@ struct RefineSettings {
     // Levels refined per refine_leaf call beyond i_min (Fig. 4's g; a flat
     // leaf's order does not depend on it).
     unsigned granularity = default_granularity;
+    // Stop a run that cascades (convergence.hpp): api::refine_stage's runs
+    // above 34 degrees.
+    bool watch_convergence = false;
 };
 
 struct RefineReport {
-    enum class Stop : std::uint8_t { none, steiner_limit, safety_limit };
+    // not_converging: above 34 degrees, a cascade of ever smaller poor
+    // triangles (convergence.hpp).
+    enum class Stop : std::uint8_t { none, steiner_limit, safety_limit, not_converging };
 
     std::uint64_t steiner_points = 0;  // all vertices added
     std::uint64_t segment_splits = 0;  // of those, on subsegments
@@ -129,6 +134,23 @@ struct RefineReport {
     std::uint64_t encroached_left = 0;
     // The triangles counted in left_no_split and left_precision, by id.
     std::vector<mesh::TriangleId> given_up_triangles;
+
+    // Set by whoever tries several bounds (api::refine_stage above 34
+    // degrees) when the asked one was out of reach: the bound of the mesh
+    // handed back, and its smallest angle apart from small input angles.
+    // (stopped is then not_converging.)
+    double angle_refined = 0;
+    double angle_reached = 0;
+    // Each try of such a run, in order (-V lists them).
+    struct Try {
+        double angle = 0;
+        const char* placement = "";
+        Stop stopped = Stop::none;
+        std::uint64_t steiner_points = 0;
+        std::uint64_t left_precision = 0;
+        double seconds = 0;
+    };
+    std::vector<Try> tries;
 };
 
 // The shared, read-only part of a run (one per refinement, all threads).
@@ -143,6 +165,9 @@ public:
     const PlacementStrategy& strategy() const { return *strategy_; }
     double tiny_length_squared() const { return tiny_length_squared_; }
     std::uint64_t safety_limit() const { return safety_limit_; }
+    // Below this squared length a split of a triangle poor by its angle
+    // stops the run as not converging (convergence.hpp; 0: not watched).
+    double cascade_floor_squared() const { return cascade_floor_squared_; }
 
     // Steiner points added by all threads (for -S and the safety limit):
     // settings().steiner_counter when given, else a counter of the run's.
@@ -156,6 +181,7 @@ private:
     const PlacementStrategy* strategy_;
     double tiny_length_squared_ = 0;
     std::uint64_t safety_limit_ = 0;
+    double cascade_floor_squared_ = 0;
 };
 
 // Told of every change refinement makes to the mesh (the parallel layer

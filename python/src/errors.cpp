@@ -73,8 +73,11 @@ void raise_check_error(const std::vector<std::string>& problems) {
     std::string message = std::to_string(problems.size()) +
                           (problems.size() == 1 ? " problem" : " problems") + " found in the mesh";
     for (const std::string& problem : problems) message += "\n  " + problem;
+    py::list listed;
+    for (const std::string& problem : problems) listed.append(py::str(problem));
     py::object error = py::reinterpret_borrow<py::object>(check_error_type)(message);
-    error.attr("problems") = py::cast(problems);
+    if (PyObject_SetAttrString(error.ptr(), "problems", listed.ptr()) != 0)
+        throw py::error_already_set();
     PyErr_SetObject(check_error_type, error.ptr());
     throw py::error_already_set();
 }

@@ -2,6 +2,7 @@
 interpreter goes on; warnings go through the warnings module; nothing is
 printed unless the switches ask for V without Q."""
 import math
+import os
 import subprocess
 import sys
 import textwrap
@@ -11,6 +12,7 @@ import numpy as np
 import pytest
 
 import gpdr
+from conftest import SOURCE_DIR
 
 SQUARE = [[0, 0], [1, 0], [1, 1], [0, 1]]
 
@@ -132,3 +134,20 @@ def test_threads_and_placement_keywords():
         gpdr.triangulate({"vertices": SQUARE}, "q", placement="nowhere")
     with pytest.raises(gpdr.Error):
         gpdr.triangulate({"vertices": SQUARE}, "q", threads=-1)
+
+
+def test_an_angle_out_of_reach_warns_and_check_raises():
+    # The channel model at 38 degrees: refinement does not converge, so the
+    # mesh is the best one found, with a warning naming the angle reached;
+    # with check=True (or the switch C) the unmet bound is a CheckError.
+    with open(os.path.join(SOURCE_DIR, "tests", "data", "models", "channel.poly")) as f:
+        channel = gpdr.loads(poly=f.read())
+    with pytest.warns(gpdr.MeshWarning, match=r"reached \d+(\.\d+)? degrees of 38"):
+        mesh = gpdr.triangulate(channel, "pq38")
+    assert len(mesh["triangles"]) > 0
+    for opts, extras in (("pq38", {"check": True}), ("pq38C", {})):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", gpdr.MeshWarning)
+            with pytest.raises(gpdr.CheckError) as failure:
+                gpdr.triangulate(channel, opts, **extras)
+        assert any("38 degrees was not met" in p for p in failure.value.problems)

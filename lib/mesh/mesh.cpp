@@ -6,11 +6,46 @@
 
 #include <string>
 
+#include <sys/mman.h>
+
 #include <gpdr/errors.hpp>
 
 namespace gpdr::mesh {
 
-Mesh::Mesh() : spare_mutex_(std::make_unique<std::mutex>()) {}
+Mesh::Mesh()
+    : reserve_once_(std::make_unique<std::once_flag>()),
+      spare_mutex_(std::make_unique<std::mutex>()) {}
+
+// The tables' address ranges: all of them (100 GiB, none of it memory until
+// used) when the process may map that much.  Under a limit on address space
+// (`ulimit -v`, valgrind) the mesh takes half of the largest range that can
+// be mapped, leaving the rest to everything else, shared by what a vertex
+// costs: two triangles (64 bytes), its point (16) and its kind (1).
+void Mesh::reserve_tables_now() {
+    constexpr std::size_t full =
+        std::size_t{TriangleTable::max_chunks} * TriangleTable::chunk_bytes +
+        std::size_t{PointTable::max_chunks} * PointTable::chunk_bytes +
+        std::size_t{KindTable::max_chunks} * KindTable::chunk_bytes;
+    auto can_map = [](std::size_t length) {
+        void* p =
+            mmap(nullptr, length, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+        if (p == MAP_FAILED) return false;
+        munmap(p, length);
+        return true;
+    };
+    std::uint32_t triangle_chunks = TriangleTable::max_chunks;
+    std::uint32_t vertex_chunks = PointTable::max_chunks;
+    if (!can_map(full)) {
+        std::size_t largest = full / 2;
+        while (largest > (std::size_t{1} << 20) && !can_map(largest)) largest /= 2;
+        const std::size_t vertices = largest / 2 / (2 * sizeof(Triangle) + sizeof(Point) + 1);
+        triangle_chunks = static_cast<std::uint32_t>(((2 * vertices) >> triangle_chunk_bits) + 1);
+        vertex_chunks = static_cast<std::uint32_t>((vertices >> vertex_chunk_bits) + 1);
+    }
+    triangles_.reserve(triangle_chunks);
+    points_.reserve(vertex_chunks);
+    kinds_.reserve(vertex_chunks);
+}
 
 Mesh::~Mesh() = default;
 
@@ -22,6 +57,7 @@ Mesh::Mesh(Mesh&& other) noexcept
       triangle_chunks_(other.triangle_chunks_.load()),
       vertex_end_(other.vertex_end_.load()),
       subsegments_(std::move(other.subsegments_)),
+      reserve_once_(std::move(other.reserve_once_)),
       spare_mutex_(std::move(other.spare_mutex_)),
       spares_(std::move(other.spares_)),
       triangle_tails_(std::move(other.triangle_tails_)),
@@ -39,6 +75,7 @@ Mesh& Mesh::operator=(Mesh&& other) noexcept {
         triangle_chunks_ = other.triangle_chunks_.load();
         vertex_end_ = other.vertex_end_.load();
         subsegments_ = std::move(other.subsegments_);
+        reserve_once_ = std::move(other.reserve_once_);
         spare_mutex_ = std::move(other.spare_mutex_);
         spares_ = std::move(other.spares_);
         triangle_tails_ = std::move(other.triangle_tails_);
@@ -58,6 +95,7 @@ VertexId Mesh::claim_vertices(std::uint32_t count) {
             throw CapacityError("mesh: more than " + std::to_string(limit) + " vertices");
     } while (!vertex_end_.compare_exchange_weak(first, first + count, std::memory_order_acq_rel));
     if (count > 0) {
+        reserve_tables();
         const std::uint32_t last = first + count - 1;
         for (std::uint32_t c = first >> vertex_chunk_bits; c <= last >> vertex_chunk_bits; ++c) {
             points_.ensure(c);
@@ -92,6 +130,7 @@ Mesh::SpareSlots Mesh::claim_triangle_chunk() {
         triangle_chunks_.fetch_sub(1, std::memory_order_acq_rel);
         throw CapacityError("mesh: more than " + std::to_string(max_triangles) + " triangles");
     }
+    reserve_tables();
     triangles_.ensure(c);
     SpareSlots s;
     s.fresh = c << triangle_chunk_bits;
@@ -112,6 +151,7 @@ void raise_to(std::atomic<std::uint32_t>& end, std::uint32_t value) {
 Mesh::SpareSlots Mesh::claim_triangle_chunk_at(std::uint32_t c) {
     if (c >= TriangleTable::max_chunks)
         throw CapacityError("mesh: more than " + std::to_string(max_triangles) + " triangles");
+    reserve_tables();
     triangles_.ensure(c);
     raise_to(triangle_chunks_, c + 1);
     SpareSlots s;
@@ -125,6 +165,7 @@ VertexId Mesh::claim_vertex_chunk_at(std::uint32_t c) {
     constexpr std::uint64_t limit = index(ghost_vertex);
     const std::uint64_t end = (std::uint64_t{c} + 1) << vertex_chunk_bits;
     if (end > limit) throw CapacityError("mesh: more than " + std::to_string(limit) + " vertices");
+    reserve_tables();
     points_.ensure(c);
     kinds_.ensure(c);
     raise_to(vertex_end_, static_cast<std::uint32_t>(end));

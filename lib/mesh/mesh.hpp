@@ -1,8 +1,8 @@
 #pragma once
 // The mesh: vertex store, triangle store and subsegment side table.
 //
-// Everything is addressed by ids (ids.hpp) into never-moving chunked storage
-// (store.hpp).  Triangles are created and destroyed only through a Pool
+// Everything is addressed by ids (ids.hpp) into never-moving storage
+// (reserved_table.hpp).  Triangles are created and destroyed only through a Pool
 // (pool.hpp), which a thread owns; Mesh itself only hands out fresh chunks and
 // takes back what a finished pool did not use.  Vertices are never removed;
 // their ids are claimed in ranges (several threads may claim at once).
@@ -21,7 +21,7 @@
 
 #include "geometry/point.hpp"
 #include "mesh/ids.hpp"
-#include "mesh/store.hpp"
+#include "mesh/reserved_table.hpp"
 #include "mesh/subsegments.hpp"
 #include "mesh/triangle.hpp"
 #include "mesh/vertex_attributes.hpp"
@@ -42,12 +42,16 @@ enum class VertexKind : std::uint8_t {
 
 class Mesh {
 public:
-    static constexpr unsigned triangle_chunk_bits = 16;  // 2 MiB per chunk
-    static constexpr unsigned vertex_chunk_bits = 16;    // 1 MiB of points per chunk
+    // Ids are claimed in chunks of 1024: a lane of the parallel refiner
+    // claims chunks of its own every round, and leaves the end of its last
+    // one unused (reserved_table.hpp).
+    static constexpr unsigned triangle_chunk_bits = 10;  // 32 KiB of triangles per chunk
+    static constexpr unsigned vertex_chunk_bits = 10;    // 16 KiB of points per chunk
     using TriangleTable =
-        ChunkTable<Triangle, triangle_chunk_bits, (max_triangles >> triangle_chunk_bits)>;
-    using PointTable = ChunkTable<Point, vertex_chunk_bits, (1u << (32 - vertex_chunk_bits))>;
-    using KindTable = ChunkTable<VertexKind, vertex_chunk_bits, (1u << (32 - vertex_chunk_bits))>;
+        ReservedTable<Triangle, triangle_chunk_bits, (max_triangles >> triangle_chunk_bits)>;
+    using PointTable = ReservedTable<Point, vertex_chunk_bits, (1u << (32 - vertex_chunk_bits))>;
+    using KindTable =
+        ReservedTable<VertexKind, vertex_chunk_bits, (1u << (32 - vertex_chunk_bits))>;
 
     Mesh();
     Mesh(Mesh&& other) noexcept;
@@ -113,7 +117,7 @@ public:
     // ids by a rule that depends on the lane alone (pool.hpp), so that the
     // ids a lane hands out never depend on which thread claimed first.  Ids
     // then have holes: whole chunks nobody claimed (they read as dead
-    // triangles and unused vertices: store.hpp), and the unused end of each
+    // triangles and unused vertices: reserved_table.hpp), and the unused end of each
     // lane's last chunk.
     //
     // The first triangle chunk and the first vertex chunk above every id
@@ -169,6 +173,13 @@ public:
     void give_back_vertices(std::uint32_t next, std::uint32_t end);
 
 private:
+    // Gives the tables their address ranges, at the first claim of an id:
+    // an empty mesh (a placeholder, moved into later) holds none.
+    void reserve_tables() {
+        std::call_once(*reserve_once_, [this] { reserve_tables_now(); });
+    }
+    void reserve_tables_now();
+
     TriangleTable triangles_;
     PointTable points_;
     KindTable kinds_;
@@ -176,6 +187,7 @@ private:
     std::atomic<std::uint32_t> triangle_chunks_{0};
     std::atomic<std::uint32_t> vertex_end_{0};
     SubsegmentTable subsegments_;
+    std::unique_ptr<std::once_flag> reserve_once_;
     std::unique_ptr<std::mutex> spare_mutex_;
     std::vector<SpareSlots> spares_;
     // Per chunk, the ids at its end that no pool used (0 where unknown),

@@ -4,8 +4,8 @@
 // Triangles: a pool hands out slots from its own intrusive free list (dead
 // slots linked through n[0]) and, when that is empty, from a fresh chunk it
 // claimed from the mesh with one atomic increment.  So the hot path never
-// calls the system allocator and never takes a lock; a chunk (65536 slots)
-// is claimed once per 65536 net creations.  Destroying a triangle bumps its
+// calls the system allocator and never takes a lock; a chunk (1024 slots)
+// is claimed once per 1024 net creations.  Destroying a triangle bumps its
 // generation, so (id, generation) pairs held in queues go stale.
 //
 // Vertices: ids come from a block the pool claimed from the mesh; at the

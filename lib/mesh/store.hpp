@@ -1,5 +1,7 @@
 #pragma once
-// ChunkTable: storage whose elements never move (docs/architecture.md, "The mesh").
+// ChunkTable: storage whose elements never move (docs/architecture.md, "The mesh"),
+// for the quadtree's nodes.  (The mesh's own tables are ReservedTables,
+// reserved_table.hpp: one load per access instead of two.)
 //
 // Element i lives in chunk i >> ChunkBits at offset i & mask.  The table of
 // chunk pointers is reserved up front, so an id handed out once stays valid
@@ -8,10 +10,9 @@
 // element must therefore be a valid "empty" element of T.
 //
 // A chunk never made reads as zeros (one read-only mapping shared by every
-// missing chunk of the table's type): ids may have holes of whole chunks
-// (the deterministic parallel refiner's lanes claim chunks by a fixed rule,
-// mesh.hpp), and a pass over all ids then reads empty elements there
-// instead of following a null pointer.  Writing into a missing chunk faults.
+// missing chunk of the table's type), so a pass over all ids reads empty
+// elements there instead of following a null pointer.  Writing into a
+// missing chunk faults.
 //
 // Thread safety: ensure() may be called by several threads at once (the first
 // to publish a chunk wins, lock-free).  Element access needs no lock: a thread

@@ -55,3 +55,36 @@ TEST_CASE("a sane area bound is not refused, nor is --force", "[cli][memory]") {
     CHECK(capped.status == 0);
     CHECK(capped.err.empty());
 }
+
+// Under a limit on address space (`ulimit -v`) the mesh's tables reserve
+// half of what can still be mapped instead of their whole ranges: a small
+// mesh comes out as without the limit, on one thread and on several, and
+// one too large for the limit ends with "out of memory" (exit status 2) and
+// no file.
+TEST_CASE("a limit on address space meshes what fits and refuses the rest", "[cli][memory]") {
+    TempDir dir;
+    fs::copy_file(project_samples() / "flow.poly", dir.path() / "flow.poly");
+    dir.write("box.poly", rectangle_poly);
+    const auto limited = [&dir](const std::string& args) {
+        return run_program(
+            dir, "/bin/sh",
+            "-c \"ulimit -v 400000 && exec '" + std::string(GPDR_EXE) + "' " + args + "\"");
+    };
+    for (const char* threads : {"-j1", "-j2"}) {
+        INFO(threads);
+        REQUIRE(run_gpdr(dir, std::string("-Qpq30a0.001 ") + threads + " flow.poly").status == 0);
+        const std::string expected = dir.read("flow.1.ele");
+        fs::remove(dir.path() / "flow.1.ele");
+        const auto r = limited(std::string("-Qpq30a0.001 ") + threads + " flow.poly");
+        CHECK(r.status == 0);
+        CHECK(r.err.empty());
+        CHECK(dir.read("flow.1.ele") == expected);
+        for (const char* ext : {".1.node", ".1.ele", ".1.poly"})
+            fs::remove(dir.path() / ("flow" + std::string(ext)));
+    }
+    // About 20 million triangles: more than half of 400 MB holds.
+    const auto r = limited("-Qpa1e-7 -j2 box.poly");
+    CHECK(r.status == 2);
+    CHECK(r.err == "gpdr: out of memory\n");
+    CHECK(dir.files() == std::vector<std::string>{"box.poly", "flow.poly"});
+}

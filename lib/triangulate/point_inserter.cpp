@@ -37,6 +37,11 @@ inline bool in_circumcircle(const Mesh& mesh, const Triangle& t, const Point& p)
     return o > 0 || (o == 0 && strictly_between(pf, pt, p));
 }
 
+// Asks for the record of the triangle across e to be brought into the cache.
+inline void prefetch(const Mesh& mesh, EdgeRef e) {
+    __builtin_prefetch(&mesh.triangle(e.triangle()));
+}
+
 }  // namespace
 
 PointInserter::PointInserter(Pool& pool, std::uint32_t vertex_count)
@@ -52,8 +57,10 @@ PointInserter::PointInserter(Pool& pool, std::uint32_t vertex_count)
 void PointInserter::search(const Point& p, TriangleId seed) {
     cavity_.clear();
     boundary_.clear();
-    mesh_.triangle(seed).flags |= Triangle::mark_bit;
+    Triangle& s = mesh_.triangle(seed);
+    s.flags |= Triangle::mark_bit;
     cavity_.push_back(seed);
+    for (const EdgeRef e : s.n) prefetch(mesh_, e);
     for (std::size_t i = 0; i < cavity_.size(); ++i) {
         const Triangle& t = mesh_.triangle(cavity_[i]);
         for (int k = 0; k < 3; ++k) {
@@ -63,6 +70,11 @@ void PointInserter::search(const Point& p, TriangleId seed) {
             if (in_circumcircle(mesh_, u, p)) {
                 u.flags |= Triangle::mark_bit;
                 cavity_.push_back(across.triangle());
+                // Its other neighbours are tested when the queue reaches it:
+                // start fetching them now (at millions of points they are
+                // mostly cache misses, and the queue has other work first).
+                prefetch(mesh_, u.n[next3(across.edge())]);
+                prefetch(mesh_, u.n[prev3(across.edge())]);
                 continue;
             }
             const VertexId from = t.v[next3(k)];

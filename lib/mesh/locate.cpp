@@ -47,6 +47,12 @@ LocateResult locate(const Mesh& mesh, const Point& p, TriangleId hint,
         const Triangle& r = mesh.triangle(t);
         // Only reached across a hull edge with p strictly beyond it.
         if (r.is_ghost()) return {t, Location::outside, r.corner_of(ghost_vertex)};
+        // The walk goes on into one of the neighbours, and a caller that
+        // inserts p searches them for its cavity: on a mesh far larger than
+        // the cache, start fetching them while the orientations are
+        // computed.
+        for (const EdgeRef e : r.n)
+            if (!e.is_none()) __builtin_prefetch(&mesh.triangle(e.triangle()));
         const Point& c0 = mesh.point(r.v[0]);
         const Point& c1 = mesh.point(r.v[1]);
         const Point& c2 = mesh.point(r.v[2]);

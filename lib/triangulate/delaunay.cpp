@@ -133,7 +133,7 @@ KeptBy insert_vertices(Pool& pool, const std::vector<std::uint32_t>& order, std:
     if (geometry::orient2d(mesh.point(a), mesh.point(b), mesh.point(c)) < 0) std::swap(b, c);
     TriangleId hint = start(pool, a, b, c);
 
-    PointInserter inserter(pool, static_cast<std::uint32_t>(order.size()));
+    PointInserter inserter(pool);
     std::uint32_t random_state = InsertBuffer{}.random_state;  // the general code's walk, exactly
     const std::size_t n = order.size();
     for (std::size_t i = 1; i < n; ++i) {

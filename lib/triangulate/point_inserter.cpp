@@ -2,6 +2,8 @@
 
 #include "triangulate/point_inserter.hpp"
 
+#include <algorithm>
+
 #include <gpdr/errors.hpp>
 
 #include "geometry/predicates.hpp"
@@ -44,8 +46,8 @@ inline void prefetch(const Mesh& mesh, EdgeRef e) {
 
 }  // namespace
 
-PointInserter::PointInserter(Pool& pool, std::uint32_t vertex_count)
-    : pool_(pool), mesh_(pool.mesh()), edge_from_(vertex_count) {}
+PointInserter::PointInserter(Pool& pool)
+    : pool_(pool), mesh_(pool.mesh()) {}
 
 // The cavity, breadth-first from the seed with cavity_ as the queue, as
 // mesh::search_cavity grows it; each edge out of it is recorded the moment
@@ -77,13 +79,7 @@ void PointInserter::search(const Point& p, TriangleId seed) {
                 prefetch(mesh_, u.n[prev3(across.edge())]);
                 continue;
             }
-            const VertexId from = t.v[next3(k)];
-            const auto at = static_cast<std::uint32_t>(boundary_.size());
-            if (from == ghost_vertex)
-                edge_from_ghost_ = at;
-            else
-                edge_from_[index(from)] = at;
-            boundary_.push_back({from, t.v[prev3(k)], across});
+            boundary_.push_back({t.v[next3(k)], t.v[prev3(k)], across});
         }
     }
 }
@@ -91,18 +87,34 @@ void PointInserter::search(const Point& p, TriangleId seed) {
 // ring_: the boundary edges head to tail, counter-clockwise round the cavity
 // from the first one found.  It closes after visiting every edge exactly
 // once unless the cavity is not a disk (then a vertex starts two edges, or
-// the edges form more than one loop).
+// the edges form more than one loop).  The edge that starts where one ends
+// is found by a scan of the few edges (a cavity has six on average), or,
+// in a large cavity, by binary search in a copy sorted by first vertex.
 void PointInserter::chain() {
     const std::size_t m = boundary_.size();
+    constexpr std::size_t scanned = 32;
+    const BoundaryEdge* edges = boundary_.data();
+    if (m > scanned) {
+        by_from_.clear();
+        for (std::uint32_t at = 0; at < m; ++at) by_from_.push_back({edges[at].from, at});
+        std::sort(by_from_.begin(), by_from_.end());
+    }
     ring_.clear();
     std::uint32_t at = 0;
     for (std::size_t i = 0; i < m; ++i) {
         if (i > 0 && at == 0) not_a_disk();
         ring_.push_back(at);
-        const VertexId to = boundary_[at].to;
-        const std::uint32_t next = to == ghost_vertex ? edge_from_ghost_ : edge_from_[index(to)];
-        if (next >= m || boundary_[next].from != to) not_a_disk();
-        at = next;
+        const VertexId to = edges[at].to;
+        if (m <= scanned) {
+            at = 0;
+            while (at < m && edges[at].from != to) ++at;
+        } else {
+            const auto it = std::lower_bound(by_from_.begin(), by_from_.end(),
+                                             std::pair{to, std::uint32_t{0}});
+            at = it != by_from_.end() && it->first == to ? it->second
+                                                         : static_cast<std::uint32_t>(m);
+        }
+        if (at == m) not_a_disk();
     }
     if (at != 0) not_a_disk();
 }

@@ -10,11 +10,11 @@
 // set never has: subsegments, regions, user tags, edges without a neighbour
 // (the ghosts close the surface).  And it does in one pass what the general
 // code does in two: the search records each boundary edge as it finds it,
-// and the edges are chained head to tail through a table indexed by vertex,
-// instead of a second walk round the cavity that pivots through its
-// triangles.
+// and the edges are chained head to tail by their vertices, instead of a
+// second walk round the cavity that pivots through its triangles.
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "mesh/locate.hpp"
@@ -24,8 +24,7 @@ namespace gpdr::triangulate {
 
 class PointInserter {
 public:
-    // `vertex_count`: the vertex ids to be inserted are below it.
-    PointInserter(mesh::Pool& pool, std::uint32_t vertex_count);
+    explicit PointInserter(mesh::Pool& pool);
 
     // Inserts vertex v at its point, which lies inside, on an edge of, or
     // (for a ghost) beyond the real edge of `where.triangle`, as located by
@@ -51,11 +50,8 @@ private:
     std::vector<mesh::TriangleId> cavity_;   // in order of joining (the queue)
     std::vector<BoundaryEdge> boundary_;     // in order of discovery
     std::vector<std::uint32_t> ring_;        // boundary_ indices, counter-clockwise
-    // Index in boundary_ of the edge that starts at a vertex (valid only for
-    // this cavity's boundary vertices; never cleared), and of the one that
-    // starts at the ghost vertex.
-    std::vector<std::uint32_t> edge_from_;
-    std::uint32_t edge_from_ghost_ = 0;
+    // (first vertex, index in boundary_), sorted: for chaining a large cavity.
+    std::vector<std::pair<mesh::VertexId, std::uint32_t>> by_from_;
 };
 
 }  // namespace gpdr::triangulate

@@ -46,8 +46,7 @@ inline void prefetch(const Mesh& mesh, EdgeRef e) {
 
 }  // namespace
 
-PointInserter::PointInserter(Pool& pool)
-    : pool_(pool), mesh_(pool.mesh()) {}
+PointInserter::PointInserter(Pool& pool) : pool_(pool), mesh_(pool.mesh()) {}
 
 // The cavity, breadth-first from the seed with cavity_ as the queue, as
 // mesh::search_cavity grows it; each edge out of it is recorded the moment
@@ -109,8 +108,8 @@ void PointInserter::chain() {
             at = 0;
             while (at < m && edges[at].from != to) ++at;
         } else {
-            const auto it = std::lower_bound(by_from_.begin(), by_from_.end(),
-                                             std::pair{to, std::uint32_t{0}});
+            const auto it =
+                std::lower_bound(by_from_.begin(), by_from_.end(), std::pair{to, std::uint32_t{0}});
             at = it != by_from_.end() && it->first == to ? it->second
                                                          : static_cast<std::uint32_t>(m);
         }

@@ -26,10 +26,10 @@ class PointInserter {
 public:
     explicit PointInserter(mesh::Pool& pool);
 
-    // Inserts vertex v at its point, which lies inside, on an edge of, or
-    // (for a ghost) beyond the real edge of `where.triangle`, as located by
-    // mesh::locate.  Returns the first triangle of the fan (the one a
-    // general insertion lists first in InsertBuffer::created).
+    // Inserts vertex v at its point, which lies inside `seed`, on one of its
+    // edges, or (for a ghost) beyond its real edge: where.triangle of
+    // mesh::locate, on_vertex excluded.  Returns the first triangle of the
+    // fan (the one a general insertion lists first in InsertBuffer::created).
     mesh::TriangleId insert(mesh::VertexId v, mesh::TriangleId seed);
 
 private:
@@ -47,9 +47,9 @@ private:
 
     mesh::Pool& pool_;
     mesh::Mesh& mesh_;
-    std::vector<mesh::TriangleId> cavity_;   // in order of joining (the queue)
-    std::vector<BoundaryEdge> boundary_;     // in order of discovery
-    std::vector<std::uint32_t> ring_;        // boundary_ indices, counter-clockwise
+    std::vector<mesh::TriangleId> cavity_;  // in order of joining (the queue)
+    std::vector<BoundaryEdge> boundary_;    // in order of discovery
+    std::vector<std::uint32_t> ring_;       // boundary_ indices, counter-clockwise
     // (first vertex, index in boundary_), sorted: for chaining a large cavity.
     std::vector<std::pair<mesh::VertexId, std::uint32_t>> by_from_;
 };

@@ -16,6 +16,7 @@
 #include "mesh/insert.hpp"
 #include "mesh/locate.hpp"
 #include "mesh/pool.hpp"
+#include "triangulate/point_inserter.hpp"
 #include "triangulate/spatial_sort.hpp"
 
 namespace gpdr::triangulate {
@@ -132,12 +133,13 @@ KeptBy insert_vertices(Pool& pool, const std::vector<std::uint32_t>& order, std:
     if (geometry::orient2d(mesh.point(a), mesh.point(b), mesh.point(c)) < 0) std::swap(b, c);
     TriangleId hint = start(pool, a, b, c);
 
-    InsertBuffer buffer;
+    PointInserter inserter(pool);
+    std::uint32_t random_state = InsertBuffer{}.random_state;  // the general code's walk, exactly
     const std::size_t n = order.size();
     for (std::size_t i = 1; i < n; ++i) {
         if (i == ib || i == ic) continue;
         const VertexId v{static_cast<std::uint32_t>(i)};
-        const LocateResult where = locate(mesh, mesh.point(v), hint, buffer.random_state);
+        const LocateResult where = locate(mesh, mesh.point(v), hint, random_state);
         if (where.where == Location::on_vertex) {
             // Keep the lower input index in the triangulation.
             const VertexId there = mesh.triangle(where.triangle).v[where.index];
@@ -150,8 +152,7 @@ KeptBy insert_vertices(Pool& pool, const std::vector<std::uint32_t>& order, std:
             hint = where.triangle;
             continue;
         }
-        insert_located(pool, v, where, buffer);
-        hint = buffer.created.front();
+        hint = inserter.insert(v, where.triangle);
     }
     return kept_by;
 }
@@ -200,8 +201,12 @@ mesh::Mesh delaunay(std::span<const Point> points, DelaunayReport& report) {
     const std::size_t n = points.size();
     Mesh mesh;
     mesh.claim_vertices(static_cast<std::uint32_t>(n));
+    // The gather reads the input in curve order, at random: ask for each
+    // point some iterations ahead, so that the misses overlap.
+    constexpr std::size_t ahead = 16;
     for (std::size_t i = 0; i < n; ++i) {
         const VertexId v{static_cast<std::uint32_t>(i)};
+        if (i + ahead < n) __builtin_prefetch(&points[order[i + ahead]]);
         mesh.set_point(v, points[order[i]]);
         mesh.set_kind(v, VertexKind::input);
     }

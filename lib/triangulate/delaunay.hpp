@@ -1,7 +1,8 @@
 #pragma once
 // Delaunay triangulation of a point set.
 //
-// Incremental Bowyer–Watson insertion (mesh/insert.hpp) in BRIO order with a
+// Incremental Bowyer–Watson insertion (point_inserter.hpp, the point-set form
+// of mesh/insert.hpp, making the same mesh) in BRIO order with a
 // Hilbert curve inside each round (spatial_sort.hpp), each point located by a
 // walk from a triangle of the point inserted before: O(n log n) expected.
 //

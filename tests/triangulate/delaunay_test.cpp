@@ -169,6 +169,22 @@ TEST_CASE("Delaunay of points nearly on a circle", "[triangulate][delaunay]") {
     verify(points, mesh, report);
 }
 
+TEST_CASE("Delaunay with a cavity of many edges", "[triangulate][delaunay]") {
+    // In the fixed insertion order the centre comes after some 230 points of
+    // the circle: its cavity is every triangle so far (each circumcircle is
+    // nearly the circle), with far more boundary edges than the point
+    // inserter scans for (it chains them by binary search then).
+    std::vector<Point> points;
+    for (int i = 0; i < 400; ++i) {
+        const double a = 2 * M_PI * i / 400;
+        points.push_back({std::cos(a), std::sin(a)});
+    }
+    points.push_back({0, 0});
+    DelaunayReport report;
+    const Mesh mesh = delaunay(points, report);
+    verify(points, mesh, report);
+}
+
 TEST_CASE("Delaunay of clustered points", "[triangulate][delaunay]") {
     std::mt19937_64 rng(21);
     std::normal_distribution<double> tight(0.0, 1e-9), loose(0.0, 1.0);

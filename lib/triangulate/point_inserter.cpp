@@ -1,0 +1,161 @@
+// Bowyer-Watson insertion for a point set with ghosts (see point_inserter.hpp).
+
+#include "triangulate/point_inserter.hpp"
+
+#include <algorithm>
+
+#include <gpdr/errors.hpp>
+
+#include "geometry/predicates.hpp"
+
+namespace gpdr::triangulate {
+
+using namespace gpdr::mesh;
+using geometry::Point;
+
+namespace {
+
+// p collinear with a and b: is it strictly between them?  (Exact: only
+// coordinate comparisons.)
+bool strictly_between(const Point& a, const Point& b, const Point& p) {
+    if (a.x != b.x) return (a.x < p.x && p.x < b.x) || (b.x < p.x && p.x < a.x);
+    return (a.y < p.y && p.y < b.y) || (b.y < p.y && p.y < a.y);
+}
+
+// Does triangle t's circumcircle hold p strictly inside?  For a ghost, its
+// "circumcircle" is the open half-plane beyond its real edge plus the open
+// edge (mesh::in_circumcircle's rule, inlined here: it is asked for every
+// neighbour of the cavity).
+inline bool in_circumcircle(const Mesh& mesh, const Triangle& t, const Point& p) {
+    const VertexId a = t.v[0], b = t.v[1], c = t.v[2];
+    if (a != ghost_vertex && b != ghost_vertex && c != ghost_vertex) [[likely]]
+        return geometry::incircle(mesh.point(a), mesh.point(b), mesh.point(c), p) > 0;
+    // The real edge runs from the corner after the ghost to the one before.
+    const VertexId from = a == ghost_vertex ? b : b == ghost_vertex ? c : a;
+    const VertexId to = a == ghost_vertex ? c : b == ghost_vertex ? a : b;
+    const Point& pf = mesh.point(from);
+    const Point& pt = mesh.point(to);
+    const double o = geometry::orient2d(pf, pt, p);
+    return o > 0 || (o == 0 && strictly_between(pf, pt, p));
+}
+
+// Asks for the record of the triangle across e to be brought into the cache.
+inline void prefetch(const Mesh& mesh, EdgeRef e) {
+    __builtin_prefetch(&mesh.triangle(e.triangle()));
+}
+
+}  // namespace
+
+PointInserter::PointInserter(Pool& pool) : pool_(pool), mesh_(pool.mesh()) {}
+
+// The cavity, breadth-first from the seed with cavity_ as the queue, as
+// mesh::search_cavity grows it; each edge out of it is recorded the moment
+// the triangle beyond it fails the test.  (A triangle that fails never joins
+// later: the test depends only on it and p.  So the recorded edges are
+// exactly the boundary, and the first one recorded is the one the general
+// boundary walk starts from: the first boundary edge of the first cavity
+// triangle that has one.)
+void PointInserter::search(const Point& p, TriangleId seed) {
+    cavity_.clear();
+    boundary_.clear();
+    Triangle& s = mesh_.triangle(seed);
+    s.flags |= Triangle::mark_bit;
+    cavity_.push_back(seed);
+    for (const EdgeRef e : s.n) prefetch(mesh_, e);
+    for (std::size_t i = 0; i < cavity_.size(); ++i) {
+        const Triangle& t = mesh_.triangle(cavity_[i]);
+        for (int k = 0; k < 3; ++k) {
+            const EdgeRef across = t.n[k];  // never none: the ghosts close the mesh
+            Triangle& u = mesh_.triangle(across.triangle());
+            if (u.marked()) continue;
+            if (in_circumcircle(mesh_, u, p)) {
+                u.flags |= Triangle::mark_bit;
+                cavity_.push_back(across.triangle());
+                // Its other neighbours are tested when the queue reaches it:
+                // start fetching them now (at millions of points they are
+                // mostly cache misses, and the queue has other work first).
+                prefetch(mesh_, u.n[next3(across.edge())]);
+                prefetch(mesh_, u.n[prev3(across.edge())]);
+                continue;
+            }
+            boundary_.push_back({t.v[next3(k)], t.v[prev3(k)], across});
+        }
+    }
+}
+
+// ring_: the boundary edges head to tail, counter-clockwise round the cavity
+// from the first one found.  It closes after visiting every edge exactly
+// once unless the cavity is not a disk (then a vertex starts two edges, or
+// the edges form more than one loop).  The edge that starts where one ends
+// is found by a scan of the few edges (a cavity has six on average), or,
+// in a large cavity, by binary search in a copy sorted by first vertex.
+void PointInserter::chain() {
+    const std::size_t m = boundary_.size();
+    constexpr std::size_t scanned = 32;
+    const BoundaryEdge* edges = boundary_.data();
+    if (m > scanned) {
+        by_from_.clear();
+        for (std::uint32_t at = 0; at < m; ++at) by_from_.push_back({edges[at].from, at});
+        std::sort(by_from_.begin(), by_from_.end());
+    }
+    ring_.clear();
+    std::uint32_t at = 0;
+    for (std::size_t i = 0; i < m; ++i) {
+        if (i > 0 && at == 0) not_a_disk();
+        ring_.push_back(at);
+        const VertexId to = edges[at].to;
+        if (m <= scanned) {
+            at = 0;
+            while (at < m && edges[at].from != to) ++at;
+        } else {
+            const auto it =
+                std::lower_bound(by_from_.begin(), by_from_.end(), std::pair{to, std::uint32_t{0}});
+            at = it != by_from_.end() && it->first == to ? it->second
+                                                         : static_cast<std::uint32_t>(m);
+        }
+        if (at == m) not_a_disk();
+    }
+    if (at != 0) not_a_disk();
+}
+
+void PointInserter::not_a_disk() {
+    for (const TriangleId t : cavity_)
+        mesh_.triangle(t).flags &= static_cast<std::uint8_t>(~Triangle::mark_bit);
+    throw InternalError(
+        "mesh: Bowyer-Watson cavity is not simply connected (the mesh is not Delaunay near the "
+        "point)");
+}
+
+// Kills the cavity (its slots are the first the pool hands out again, last
+// killed first) and fills it with the fan round v in ring_ order: triangle
+// (from, to, v) per boundary edge, linked across edge 2 to the outside and
+// across edges 0 and 1 to the next and previous triangles of the fan.
+TriangleId PointInserter::fan(VertexId v) {
+    for (const TriangleId t : cavity_) pool_.destroy(t);
+    TriangleId first = no_triangle, previous = no_triangle;
+    for (const std::uint32_t at : ring_) {
+        const BoundaryEdge& b = boundary_[at];
+        const TriangleId id = pool_.create(b.from, b.to, v);
+        Triangle& t = mesh_.triangle(id);
+        t.n[2] = b.outer;
+        mesh_.triangle(b.outer.triangle()).n[b.outer.edge()] = EdgeRef(id, 2);
+        if (previous == no_triangle) {
+            first = id;
+        } else {
+            t.n[1] = EdgeRef(previous, 0);
+            mesh_.triangle(previous).n[0] = EdgeRef(id, 1);
+        }
+        previous = id;
+    }
+    mesh_.triangle(previous).n[0] = EdgeRef(first, 1);
+    mesh_.triangle(first).n[1] = EdgeRef(previous, 0);
+    return first;
+}
+
+TriangleId PointInserter::insert(VertexId v, TriangleId seed) {
+    search(mesh_.point(v), seed);
+    chain();
+    return fan(v);
+}
+
+}  // namespace gpdr::triangulate

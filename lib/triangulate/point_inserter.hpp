@@ -1,0 +1,57 @@
+#pragma once
+// Bowyer-Watson insertion specialised for triangulating a point set with
+// ghost triangles (delaunay.cpp), the hottest loop of the point-set stage.
+//
+// It makes exactly the mesh that mesh::insert_located would make, slot for
+// slot: the cavity is grown breadth-first in the same order (so its
+// triangles die, and their slots return to the pool's free list, in the same
+// order), and the fan is created counter-clockwise from the same boundary
+// edge, the first one the search meets.  What it leaves out is what a point
+// set never has: subsegments, regions, user tags, edges without a neighbour
+// (the ghosts close the surface).  And it does in one pass what the general
+// code does in two: the search records each boundary edge as it finds it,
+// and the edges are chained head to tail by their vertices, instead of a
+// second walk round the cavity that pivots through its triangles.
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "mesh/locate.hpp"
+#include "mesh/pool.hpp"
+
+namespace gpdr::triangulate {
+
+class PointInserter {
+public:
+    explicit PointInserter(mesh::Pool& pool);
+
+    // Inserts vertex v at its point, which lies inside `seed`, on one of its
+    // edges, or (for a ghost) beyond its real edge: where.triangle of
+    // mesh::locate, on_vertex excluded.  Returns the first triangle of the
+    // fan (the one a general insertion lists first in InsertBuffer::created).
+    mesh::TriangleId insert(mesh::VertexId v, mesh::TriangleId seed);
+
+private:
+    // A cavity boundary edge, seen from inside: from -> to, and the edge of
+    // the triangle outside that faces it.
+    struct BoundaryEdge {
+        mesh::VertexId from, to;
+        mesh::EdgeRef outer;
+    };
+
+    void search(const geometry::Point& p, mesh::TriangleId seed);
+    void chain();
+    mesh::TriangleId fan(mesh::VertexId v);
+    [[noreturn]] void not_a_disk();
+
+    mesh::Pool& pool_;
+    mesh::Mesh& mesh_;
+    std::vector<mesh::TriangleId> cavity_;  // in order of joining (the queue)
+    std::vector<BoundaryEdge> boundary_;    // in order of discovery
+    std::vector<std::uint32_t> ring_;       // boundary_ indices, counter-clockwise
+    // (first vertex, index in boundary_), sorted: for chaining a large cavity.
+    std::vector<std::pair<mesh::VertexId, std::uint32_t>> by_from_;
+};
+
+}  // namespace gpdr::triangulate

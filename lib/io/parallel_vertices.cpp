@@ -23,6 +23,13 @@ namespace {
 // Slices per thread: enough that a thread busy with the hash, or one slow
 // slice, leaves the others work to take.
 constexpr std::size_t slices_per_thread = 8;
+// More threads than this gain nothing on the bandwidth of one file (and
+// -j1000 must not start a thousand).
+constexpr unsigned max_threads = 64;
+
+unsigned reading_threads(const ReadSettings& settings) {
+    return std::min(settings.threads, max_threads);
+}
 
 // One slice of the vertex lines and what parsing it found.  Line numbers
 // are counted from the slice's first line (1); offsets from its first byte.
@@ -111,11 +118,13 @@ void parse_slice(const std::string& path, const NodeHeader& h, std::size_t expec
 
 // Which slices are still needed: a slice with an error, or one that
 // completes `count` vertices with the slices before it, ends the list, and
-// the slices after it are skipped if not yet started.
+// the slices after it are skipped if not yet started.  A slice's results
+// are read here only once its thread has reported it parsed (under the
+// lock, which orders its writes before these reads).
 class Progress {
 public:
-    Progress(std::vector<Slice>& slices, std::size_t count)
-        : slices_(slices), count_(count), needed_(slices.size()) {}
+    Progress(const std::vector<Slice>& slices, std::size_t count)
+        : slices_(slices), count_(count), needed_(slices.size()), parsed_(slices.size(), false) {}
 
     bool needed(std::size_t i) {
         const std::lock_guard<std::mutex> lock(mutex_);
@@ -123,8 +132,9 @@ public:
     }
     void parsed(std::size_t i) {
         const std::lock_guard<std::mutex> lock(mutex_);
+        parsed_[i] = true;
         if (slices_[i].error) needed_ = std::min(needed_, i + 1);
-        while (done_ < needed_ && slices_[done_].parsed && !slices_[done_].error) {
+        while (done_ < needed_ && parsed_[done_] && !slices_[done_].error) {
             vertices_ += slices_[done_].vertices;
             ++done_;
             if (vertices_ >= count_) needed_ = std::min(needed_, done_);
@@ -133,10 +143,11 @@ public:
 
 private:
     std::mutex mutex_;
-    std::vector<Slice>& slices_;
+    const std::vector<Slice>& slices_;
     std::size_t count_;
     std::size_t needed_;
-    std::size_t done_ = 0;  // slices 0 .. done_ - 1 parsed without error...
+    std::vector<bool> parsed_;
+    std::size_t done_ = 0;      // slices 0 .. done_ - 1 parsed without error...
     std::size_t vertices_ = 0;  // ... holding this many vertices
 };
 
@@ -232,7 +243,7 @@ void size_for(NodeSet& nodes, const NodeHeader& h) {
 
 std::size_t vertex_slices(const TextReader& in, const ReadSettings& settings) {
     if (settings.threads < 2 || !in.sized()) return 1;
-    const std::size_t most = slices_per_thread * settings.threads;
+    const std::size_t most = slices_per_thread * reading_threads(settings);
     if (settings.min_slice_bytes == 0) return most;
     return std::clamp<std::size_t>(in.remaining_bytes() / settings.min_slice_bytes, 1, most);
 }
@@ -255,7 +266,7 @@ NodeSet read_vertices_in_parallel(TextReader& in, const NodeHeader& h, int defau
     NodeSet nodes;
     nodes.attribute_count = h.attributes;
     const bool can_hold = h.count <= (rest.size() + 1) / 6;
-    run_tasks(settings.threads, first_slice_task + slices.size(), [&](std::size_t task) {
+    run_tasks(reading_threads(settings), first_slice_task + slices.size(), [&](std::size_t task) {
         if (task == hash_task) {
             hash = hash_bytes(file);
         } else if (task == allocate_task) {
@@ -276,6 +287,8 @@ NodeSet read_vertices_in_parallel(TextReader& in, const NodeHeader& h, int defau
     std::size_t found = 0, lines_before = header_line;
     std::uint64_t offset = start;
     for (const Slice& s : slices) {
+        // Progress skips only slices past one that ends the list or fails.
+        if (!s.parsed) throw InternalError("parallel reading skipped a slice it needed");
         ids.check(s, found, h.count, lines_before);
         if (found + s.vertices >= h.count) {
             const std::size_t n = h.count - found;
@@ -309,7 +322,7 @@ NodeSet read_vertices_in_parallel(TextReader& in, const NodeHeader& h, int defau
     }
 
     if (nodes.xy.size() != 2 * h.count) size_for(nodes, h);
-    run_tasks(settings.threads, join.taken.size(), [&](std::size_t i) {
+    run_tasks(reading_threads(settings), join.taken.size(), [&](std::size_t i) {
         place(slices[i], join.first_vertex[i], join.taken[i], nodes);
         slices[i].nodes = NodeSet{};
     });

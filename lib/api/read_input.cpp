@@ -4,8 +4,8 @@
 #include <gpdr/io.hpp>
 
 #include "api/job_stages.hpp"
-#include "parallel/schedule.hpp"
 #include "io/content_hash.hpp"
+#include "parallel/schedule.hpp"
 
 namespace gpdr::api {
 

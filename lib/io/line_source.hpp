@@ -92,9 +92,7 @@ public:
     std::uint64_t finish();
 
     // For a regular file: all of its bytes, mapped.
-    std::string_view bytes() const noexcept {
-        return {base_, std::size_t(end_ - base_)};
-    }
+    std::string_view bytes() const noexcept { return {base_, std::size_t(end_ - base_)}; }
     // For a regular file: goes on as if line `line` had just been read and
     // ended before byte `offset` (the lines in between were read and checked
     // elsewhere: by the threads of a parallel read).

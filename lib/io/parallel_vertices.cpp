@@ -34,14 +34,14 @@ unsigned reading_threads(const ReadSettings& settings) {
 // One slice of the vertex lines and what parsing it found.  Line numbers
 // are counted from the slice's first line (1); offsets from its first byte.
 struct Slice {
-    std::string_view bytes;  // whole lines
-    bool parsed = false;     // false: skipped, the slices before it end the list
-    NodeSet nodes;           // the slice's vertices (a failed line's may be partial)
-    std::size_t vertices = 0;            // data lines parsed whole, before any error
-    std::size_t lines = 0;               // all of its lines (only when there is no error)
-    std::optional<InputError> error;     // its first error
-    std::uint64_t after_last = 0;        // the end of its last vertex line...
-    std::size_t after_last_line = 0;     // ... and that line
+    std::string_view bytes;           // whole lines
+    bool parsed = false;              // false: skipped, the slices before it end the list
+    NodeSet nodes;                    // the slice's vertices (a failed line's may be partial)
+    std::size_t vertices = 0;         // data lines parsed whole, before any error
+    std::size_t lines = 0;            // all of its lines (only when there is no error)
+    std::optional<InputError> error;  // its first error
+    std::uint64_t after_last = 0;     // the end of its last vertex line...
+    std::size_t after_last_line = 0;  // ... and that line
     // The vertex numbers: the first, and the first line whose number is
     // not the first + its index (so the join can check them against the
     // numbers the slices before it end with).  `numbered` counts the lines
@@ -206,7 +206,7 @@ private:
 
 // The end of the n-th data line (n >= 1) of a slice, as an offset and line.
 std::pair<std::uint64_t, std::size_t> end_of_data_line(const std::string& path, const Slice& s,
-                                                        std::size_t n) {
+                                                       std::size_t n) {
     if (n == s.vertices) return {s.after_last, s.after_last_line};
     TextReader in(path, s.bytes, LineSource::Borrowed{});
     for (std::size_t k = 0; k < n; ++k) in.next_line();
@@ -248,9 +248,8 @@ std::size_t vertex_slices(const TextReader& in, const ReadSettings& settings) {
     return std::clamp<std::size_t>(in.remaining_bytes() / settings.min_slice_bytes, 1, most);
 }
 
-NodeSet read_vertices_in_parallel(TextReader& in, const NodeHeader& h, int default_base,
-                                  int& base, const WarningSink& warn,
-                                  const ReadSettings& settings) {
+NodeSet read_vertices_in_parallel(TextReader& in, const NodeHeader& h, int default_base, int& base,
+                                  const WarningSink& warn, const ReadSettings& settings) {
     const std::string_view file = in.bytes();
     const std::uint64_t start = in.offset();
     const std::size_t header_line = in.line();
@@ -274,8 +273,8 @@ NodeSet read_vertices_in_parallel(TextReader& in, const NodeHeader& h, int defau
         } else {
             const std::size_t i = task - first_slice_task;
             if (!progress.needed(i)) return;
-            parse_slice(in.path(), h, expected_vertices(h.count, slices[i].bytes.size(), rest.size()),
-                        slices[i]);
+            parse_slice(in.path(), h,
+                        expected_vertices(h.count, slices[i].bytes.size(), rest.size()), slices[i]);
             progress.parsed(i);
         }
     });

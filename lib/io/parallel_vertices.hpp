@@ -21,8 +21,8 @@
 #include <gpdr/diagnostics.hpp>
 #include <gpdr/files.hpp>
 
-#include "io/text_reader.hpp"
 #include "io/read_settings.hpp"
+#include "io/text_reader.hpp"
 #include "io/vertex_lines.hpp"
 
 namespace gpdr::io::detail {
@@ -36,8 +36,7 @@ std::size_t vertex_slices(const TextReader& in, const ReadSettings& settings);
 // vertex_slices() slices (at least 2), and leaves `in` after the last
 // vertex line, with the file's content hash for its finish().  Sets `base`
 // from the first vertex as read_vertices does.
-NodeSet read_vertices_in_parallel(TextReader& in, const NodeHeader& h, int default_base,
-                                  int& base, const WarningSink& warn,
-                                  const ReadSettings& settings);
+NodeSet read_vertices_in_parallel(TextReader& in, const NodeHeader& h, int default_base, int& base,
+                                  const WarningSink& warn, const ReadSettings& settings);
 
 }  // namespace gpdr::io::detail

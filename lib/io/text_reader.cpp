@@ -235,8 +235,7 @@ void IdChecker::check(TextReader& in, std::int64_t id, std::size_t k, const Warn
     in.warn(warn, jump_message(kind_, id, expected));
 }
 
-std::string IdChecker::jump_message(std::string_view kind, std::int64_t id,
-                                    std::int64_t expected) {
+std::string IdChecker::jump_message(std::string_view kind, std::int64_t id, std::int64_t expected) {
     return std::string(kind) + " number " + std::to_string(id) + " where " +
            std::to_string(expected) +
            " was expected; ids are not consecutive (gpdr, like Triangle, numbers " +

@@ -32,8 +32,8 @@ std::vector<std::string> vertex_lines() {
         return double(state >> 11) / double(std::uint64_t{1} << 53);
     };
     for (std::size_t k = 0; k < vertex_count; ++k) {
-        std::string line = fmt::format("{} {:.17g} {:.17g} {:.3f} {}", k + 1, next(), next(),
-                                       next(), k % 3);
+        std::string line =
+            fmt::format("{} {:.17g} {:.17g} {:.3f} {}", k + 1, next(), next(), next(), k % 3);
         if (k % 1000 == 7) line += "  # a comment after the values";
         line += k % 5 == 0 ? "\r\n" : "\n";
         lines.push_back(line);
@@ -51,7 +51,7 @@ std::string node_file(const std::vector<std::string>& lines, std::size_t count =
 // -j3 and -j8; checks that every run gives the same status, messages and
 // files as -j1, and returns -j1's stderr.
 std::string same_on_any_threads(const std::string& name, const std::string& text,
-                                 const std::string& switches) {
+                                const std::string& switches) {
     std::string first_err;
     std::vector<std::pair<std::string, std::string>> first_files;
     int first_status = 0;
@@ -91,13 +91,15 @@ TEST_CASE("an error in the first or a later slice is reported alike", "[cli][par
         std::vector<std::string> bad = lines;
         bad[k] = fmt::format("{} 0.5 0.5x 1 0\n", k + 1);
         const std::string err = same_on_any_threads("bad.node", node_file(bad), "");
-        CHECK(err == fmt::format("gpdr: bad.node:{}: y coordinate '0.5x' is not a number\n", k + 2));
+        CHECK(err ==
+              fmt::format("gpdr: bad.node:{}: y coordinate '0.5x' is not a number\n", k + 2));
     }
     // A NUL byte in a later slice.
     std::vector<std::string> nul = lines;
     nul[vertex_count * 3 / 4][2] = '\0';
-    CHECK(same_on_any_threads("nul.node", node_file(nul), "") ==
-          fmt::format("gpdr: nul.node:{}: a NUL byte: not a text file\n", vertex_count * 3 / 4 + 2));
+    CHECK(
+        same_on_any_threads("nul.node", node_file(nul), "") ==
+        fmt::format("gpdr: nul.node:{}: a NUL byte: not a text file\n", vertex_count * 3 / 4 + 2));
     // A header announcing one vertex more than there are: reported on the
     // line after the last.
     CHECK(same_on_any_threads("count.node", node_file(lines, vertex_count + 1), "") ==
@@ -120,8 +122,8 @@ TEST_CASE("a large .poly reads its vertices in slices and the rest in order",
     // An error after the vertex list, and one in it.
     const std::size_t at = poly.find("2 2 3 5");
     const std::string bad_segment = poly.substr(0, at) + "2 2 x 5" + poly.substr(at + 7);
-    CHECK(same_on_any_threads("segment.poly", bad_segment, "p").find(
-              fmt::format("segment.poly:{}: segment endpoint 'x'", vertex_count + 5)) !=
+    CHECK(same_on_any_threads("segment.poly", bad_segment, "p")
+              .find(fmt::format("segment.poly:{}: segment endpoint 'x'", vertex_count + 5)) !=
           std::string::npos);
     std::vector<std::string> bad = lines;
     bad[vertex_count - 1] = fmt::format("{} 0.5\n", vertex_count);
@@ -140,8 +142,8 @@ TEST_CASE("a numbering jump is reported on its line on any number of threads",
         const RunResult r = run_gpdr(dir, fmt::format("-NEPj{} jump.node", threads));
         INFO("-j" << threads << ": " << r.err);
         CHECK(r.status == 0);
-        CHECK(r.err.find(fmt::format("jump.node:{}: warning: vertex number {} where {} was expected",
-                                     vertex_count - 3, vertex_count + 7, vertex_count - 4)) !=
-              std::string::npos);
+        CHECK(r.err.find(fmt::format(
+                  "jump.node:{}: warning: vertex number {} where {} was expected", vertex_count - 3,
+                  vertex_count + 7, vertex_count - 4)) != std::string::npos);
     }
 }

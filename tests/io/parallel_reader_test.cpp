@@ -36,7 +36,8 @@ std::string outcome(const Read& read) {
         s += fmt::format("base {} hash {}\n", r.base, r.hash);
         for (const double v : n.xy) s += fmt::format("{:x} ", std::bit_cast<std::uint64_t>(v));
         s += fmt::format("\nattributes {}:", n.attribute_count);
-        for (const double v : n.attributes) s += fmt::format(" {:x}", std::bit_cast<std::uint64_t>(v));
+        for (const double v : n.attributes)
+            s += fmt::format(" {:x}", std::bit_cast<std::uint64_t>(v));
         s += "\nmarkers:";
         for (const int m : n.markers) s += fmt::format(" {}", m);
         s += fmt::format("\nrest {}\n", r.rest);

@@ -78,3 +78,38 @@ bench_input() {
 
 # ele_count FILE: the triangle count in an .ele file's header.
 ele_count() { awk '{ sub(/#.*/, "") } NF { print $1; exit }' "$1"; }
+
+# bench_sample PROGRAM SWITCHES INPUT: runs PROGRAM -VSWITCHES INPUT in the
+# input's folder, as bench_run does, and prints one line of figures:
+# "read_ms delaunay_ms total_ms wall_s peak_kib" ("failed" if it failed).
+# read_ms is gpdr's "Read milliseconds"; Triangle does not time its reading
+# apart, so for a program without that line it is the total running time
+# less the Delaunay and output times (Triangle then does nothing else).
+bench_sample() {
+  local program=$1 switches=$2 input=$3
+  local log="$BENCH_DIR/run.log" tlog="$BENCH_DIR/time.log"
+  rm -f "${input%.*}".1.*
+  sync
+  ( cd "$(dirname "$input")" && /usr/bin/time -f "%e %M" -o "$tlog" "$program" "-V$switches" "$(basename "$input")" >"$log" 2>&1 ) || {
+    echo failed; return; }
+  local wall peak
+  read -r wall peak <"$tlog"
+  awk -v wall="$wall" -v peak="$peak" '
+    /^Read milliseconds:/ { read = $NF; has_read = 1 }
+    /^Delaunay milliseconds:/ { dl = $NF }
+    /^Output milliseconds:/ { out = $NF }
+    /^Total running milliseconds:/ { total = $NF }
+    END { if (!has_read) read = total - dl - out
+          printf "%d %d %d %s %d\n", read, dl, total, wall, peak }' "$log"
+}
+
+# median_columns FILE: the median of each column of FILE's lines of numbers
+# (the lower middle one for an even count), space-separated.
+median_columns() {
+  local columns
+  columns=$(awk 'NR == 1 { print NF }' "$1")
+  for ((c = 1; c <= columns; c++)); do
+    sort -g -k"$c","$c" "$1" | awk -v c="$c" '{ v[NR] = $c } END { printf "%s ", v[int((NR + 1) / 2)] }'
+  done
+  echo
+}

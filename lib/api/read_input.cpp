@@ -5,14 +5,17 @@
 
 #include "api/job_stages.hpp"
 #include "io/content_hash.hpp"
+#include "parallel/schedule.hpp"
 
 namespace gpdr::api {
 
 Input read_input(const Options& options, const FileNames& names, const WarningSink& warn) {
     const int default_base = options.zero_based ? 0 : 1;
+    // -jN reads the vertex lines of a large .node or .poly on N threads.
+    const unsigned threads = parallel::thread_count(options.threads);
     Input in;
     if (options.poly && !options.refine) {
-        auto poly = io::read_poly(names.in_poly, warn, default_base);
+        auto poly = io::read_poly(names.in_poly, warn, default_base, nullptr, threads);
         in.nodes.base = poly.base;
         in.nodes.data = std::move(poly.data.nodes);
         in.node_file = poly.data.nodes_from_node_file ? names.in_node : names.in_poly;
@@ -22,7 +25,7 @@ Input read_input(const Options& options, const FileNames& names, const WarningSi
         in.content_hash = poly.content_hash;
         return in;
     }
-    in.nodes = io::read_node(names.in_node, warn, default_base);
+    in.nodes = io::read_node(names.in_node, warn, default_base, threads);
     in.node_file = names.in_node;
     in.content_hash = in.nodes.content_hash;
     if (options.refine) {
@@ -35,7 +38,7 @@ Input read_input(const Options& options, const FileNames& names, const WarningSi
             // of its own (count 0): they are those of the .node just read,
             // which is not read twice (a pipe could not be).
             const io::KnownNodes known{in.nodes.data.size(), in.nodes.base, in.nodes.content_hash};
-            auto poly = io::read_poly(names.in_poly, warn, default_base, &known);
+            auto poly = io::read_poly(names.in_poly, warn, default_base, &known, threads);
             poly.data.nodes = {};
             in.poly_file = names.in_poly;
             in.poly = std::move(poly.data);

@@ -73,6 +73,18 @@ LineSource::LineSource(const std::string& path, std::string_view why_needed) : p
     fd_ = file.release();
 }
 
+LineSource::LineSource(const std::string& path, std::string_view bytes, Borrowed) : path_(path) {
+    if (bytes.empty()) return;
+    base_ = next_ = line_begin_ = line_end_ = newline_scanned_ = nul_scanned_ = bytes.data();
+    end_ = base_ + bytes.size();
+}
+
+void LineSource::resume_at(std::uint64_t offset, std::size_t line) noexcept {
+    next_ = line_begin_ = line_end_ = newline_scanned_ = nul_scanned_ = base_ + offset;
+    nul_ = nullptr;
+    line_ = line;
+}
+
 LineSource::~LineSource() {
     if (mapping_ != nullptr) ::munmap(mapping_, mapping_size_);
     if (fd_ >= 0) ::close(fd_);
@@ -164,6 +176,7 @@ void LineSource::refill() {
 std::uint64_t LineSource::finish() {
     while (next_line()) {}
     if (stream_) return hasher_.value();
+    if (hash_adopted_) return adopted_hash_;
     return hash_bytes(std::string_view(base_, std::size_t(end_ - base_)));
 }
 

@@ -32,6 +32,8 @@ namespace gpdr::io::detail {
 
 class LineSource {
 public:
+    struct Borrowed {};  // tag of the constructor over bytes in memory
+
     static constexpr std::size_t max_line_bytes = std::size_t{1} << 20;
     // The least one read() asks a stream for: the buffer holds the current
     // line and this much room behind it.
@@ -40,6 +42,10 @@ public:
     // InputError on line 0 if the file cannot be opened or is a folder;
     // `why_needed`, when not empty, is appended to its reason.
     LineSource(const std::string& path, std::string_view why_needed);
+    // The lines of `bytes`, a piece of a mapped file that starts at a line
+    // start (one slice of a file read on several threads): not owned,
+    // checked like a regular file's, numbered from 1.
+    LineSource(const std::string& path, std::string_view bytes, Borrowed);
     ~LineSource();
     LineSource(const LineSource&) = delete;
     LineSource& operator=(const LineSource&) = delete;
@@ -81,8 +87,22 @@ public:
 
     // Reaches the end of the file, checking every line left as next_line()
     // does (a stream is read to its end), and returns the hash of all of the
-    // file's bytes: hash_bytes() over the file, for either kind.
+    // file's bytes: hash_bytes() over the file, for either kind (or the
+    // value given to adopt_hash()).
     std::uint64_t finish();
+
+    // For a regular file: all of its bytes, mapped.
+    std::string_view bytes() const noexcept { return {base_, std::size_t(end_ - base_)}; }
+    // For a regular file: goes on as if line `line` had just been read and
+    // ended before byte `offset` (the lines in between were read and checked
+    // elsewhere: by the threads of a parallel read).
+    void resume_at(std::uint64_t offset, std::size_t line) noexcept;
+    // For a regular file: the hash of its bytes, computed elsewhere (on
+    // another thread, while this one parsed), for finish() to return.
+    void adopt_hash(std::uint64_t hash) noexcept {
+        adopted_hash_ = hash;
+        hash_adopted_ = true;
+    }
 
 private:
     // next_line() for every case: a line cut by the end of a stream's
@@ -118,6 +138,8 @@ private:
     std::uint64_t dropped_ = 0;            // a stream's bytes consumed and dropped from the buffer
     std::size_t line_ = 0;
     ContentHasher hasher_;  // a stream's bytes, as they are read
+    std::uint64_t adopted_hash_ = 0;
+    bool hash_adopted_ = false;
 };
 
 }  // namespace gpdr::io::detail

@@ -13,23 +13,20 @@
 #include <gpdr/io.hpp>
 
 #include "io/content_hash.hpp"
+#include "io/parallel_vertices.hpp"
 #include "io/read_common.hpp"
+#include "io/read_settings.hpp"
 #include "io/text_reader.hpp"
+#include "io/vertex_lines.hpp"
 
 namespace gpdr::io {
 
 using detail::IdChecker;
+using detail::NodeHeader;
+using detail::ReadSettings;
 using detail::TextReader;
 
 namespace {
-
-// The header of a vertex list: "<#vertices> <dimension> <#attributes> <#markers>".
-struct NodeHeader {
-    std::size_t count = 0;
-    std::uint32_t attributes = 0;
-    bool markers = false;
-    std::size_t line = 0;
-};
 
 NodeHeader read_node_header(TextReader& in) {
     if (!in.next_line())
@@ -50,7 +47,9 @@ NodeHeader read_node_header(TextReader& in) {
 // numbering base of the run (0 or 1); any other first index keeps the
 // default, as in Triangle.
 NodeSet read_vertices(TextReader& in, const NodeHeader& h, int default_base, int& base,
-                      const WarningSink& warn) {
+                      const WarningSink& warn, const ReadSettings& settings) {
+    if (h.count > 0 && detail::vertex_slices(in, settings) > 1)
+        return detail::read_vertices_in_parallel(in, h, default_base, base, warn, settings);
     NodeSet nodes;
     nodes.attribute_count = h.attributes;
     const std::size_t expect = in.reserve_hint(h.count, 6);
@@ -66,29 +65,24 @@ NodeSet read_vertices(TextReader& in, const NodeHeader& h, int default_base, int
             if (id == 0 || id == 1) {
                 base = static_cast<int>(id);
             } else {
-                in.warn(warn, fmt::format("first vertex number {} is neither 0 nor 1; numbering "
-                                          "from {}",
-                                          id, default_base));
+                in.warn(warn, detail::odd_first_id_message(id, default_base));
             }
             ids = IdChecker("vertex", base);
             if (id != base) ids.silence();
         }
         ids.check(in, id, k, warn);
-        nodes.xy.push_back(in.real("x coordinate"));
-        nodes.xy.push_back(in.real("y coordinate"));
-        for (std::uint32_t a = 0; a < h.attributes; ++a)
-            nodes.attributes.push_back(in.real_or(0.0, "vertex attribute"));
-        if (h.markers) nodes.markers.push_back(detail::marker(in, "vertex marker"));
+        detail::read_vertex_fields(in, h, nodes);
     }
     return nodes;
 }
 
 ReadResult<NodeSet> read_node_impl(const std::string& path, std::string_view why_needed,
-                                   const WarningSink& warn, int default_base) {
+                                   const WarningSink& warn, int default_base,
+                                   const ReadSettings& settings) {
     TextReader in(path, why_needed);
     const NodeHeader h = read_node_header(in);
     ReadResult<NodeSet> r;
-    r.data = read_vertices(in, h, default_base, r.base, warn);
+    r.data = read_vertices(in, h, default_base, r.base, warn, settings);
     r.content_hash = in.finish();
     return r;
 }
@@ -103,8 +97,14 @@ std::string node_file_for(const std::string& poly_path) {
 
 }  // namespace
 
-ReadResult<NodeSet> read_node(const std::string& path, const WarningSink& warn, int default_base) {
-    return read_node_impl(path, {}, warn, default_base);
+ReadResult<NodeSet> read_node(const std::string& path, const WarningSink& warn, int default_base,
+                              unsigned threads) {
+    return read_node_impl(path, {}, warn, default_base, ReadSettings{threads});
+}
+
+ReadResult<NodeSet> detail::read_node_with(const std::string& path, const WarningSink& warn,
+                                           int default_base, const ReadSettings& settings) {
+    return read_node_impl(path, {}, warn, default_base, settings);
 }
 
 namespace {
@@ -113,12 +113,12 @@ namespace {
 // (Triangle's convention) those of the .node beside it, read here unless
 // the caller has them (`known`).  Sets r's base and starts its content hash.
 void read_poly_vertices(TextReader& in, const std::string& path, const WarningSink& warn,
-                        int default_base, const KnownNodes* known, ReadResult<PolyFile>& r,
-                        std::size_t& vertex_count) {
+                        int default_base, const KnownNodes* known, const ReadSettings& settings,
+                        ReadResult<PolyFile>& r, std::size_t& vertex_count) {
     PolyFile& poly = r.data;
     const NodeHeader h = read_node_header(in);
     if (h.count != 0) {
-        poly.nodes = read_vertices(in, h, default_base, r.base, warn);
+        poly.nodes = read_vertices(in, h, default_base, r.base, warn, settings);
         vertex_count = poly.nodes.size();
         return;
     }
@@ -134,7 +134,7 @@ void read_poly_vertices(TextReader& in, const std::string& path, const WarningSi
         node_path,
         fmt::format("{} line {} has vertex count 0, which takes the vertices from {}", path, h.line,
                     node_path),
-        warn, default_base);
+        warn, default_base, settings);
     poly.nodes = std::move(nodes.data);
     r.base = nodes.base;
     r.content_hash = nodes.content_hash;
@@ -205,11 +205,17 @@ void read_poly_regions(TextReader& in, int base, const WarningSink& warn,
 }  // namespace
 
 ReadResult<PolyFile> read_poly(const std::string& path, const WarningSink& warn, int default_base,
-                               const KnownNodes* known) {
+                               const KnownNodes* known, unsigned threads) {
+    return detail::read_poly_with(path, warn, default_base, known, ReadSettings{threads});
+}
+
+ReadResult<PolyFile> detail::read_poly_with(const std::string& path, const WarningSink& warn,
+                                            int default_base, const KnownNodes* known,
+                                            const ReadSettings& settings) {
     TextReader in(path);
     ReadResult<PolyFile> r;
     std::size_t vertex_count = 0;
-    read_poly_vertices(in, path, warn, default_base, known, r, vertex_count);
+    read_poly_vertices(in, path, warn, default_base, known, settings, r, vertex_count);
     read_poly_segments(in, r.base, vertex_count, warn, r.data.segments);
     read_poly_holes(in, r.base, warn, r.data.holes);
     read_poly_regions(in, r.base, warn, r.data.regions);

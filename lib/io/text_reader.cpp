@@ -77,6 +77,9 @@ std::string quoted(std::string_view token) {
 TextReader::TextReader(std::string path, std::string_view why_needed)
     : path_(std::move(path)), source_(path_, why_needed) {}
 
+TextReader::TextReader(std::string path, std::string_view bytes, LineSource::Borrowed tag)
+    : path_(std::move(path)), source_(path_, bytes, tag) {}
+
 bool TextReader::next_line() {
     if (at_end_) return false;
     while (source_.next_line()) {
@@ -229,12 +232,16 @@ void IdChecker::check(TextReader& in, std::int64_t id, std::size_t k, const Warn
     const auto expected = static_cast<std::int64_t>(k) + base_;
     if (id == expected || warned_) return;
     warned_ = true;
-    in.warn(warn, std::string(kind_) + " number " + std::to_string(id) + " where " +
-                      std::to_string(expected) +
-                      " was expected; ids are not consecutive (gpdr, like Triangle, numbers " +
-                      (kind_ == "vertex" ? std::string("vertices") : std::string(kind_) + "s") +
-                      " by their order in the file; further jumps in this "
-                      "file are not reported)");
+    in.warn(warn, jump_message(kind_, id, expected));
+}
+
+std::string IdChecker::jump_message(std::string_view kind, std::int64_t id, std::int64_t expected) {
+    return std::string(kind) + " number " + std::to_string(id) + " where " +
+           std::to_string(expected) +
+           " was expected; ids are not consecutive (gpdr, like Triangle, numbers " +
+           (kind == "vertex" ? std::string("vertices") : std::string(kind) + "s") +
+           " by their order in the file; further jumps in this "
+           "file are not reported)";
 }
 
 }  // namespace gpdr::io::detail

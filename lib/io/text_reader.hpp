@@ -42,6 +42,9 @@ public:
     // 0; `why_needed`, when not empty, is appended to its reason (used by
     // .poly files that take their vertices from a .node file).
     explicit TextReader(std::string path, std::string_view why_needed = {});
+    // The lines of `bytes`, one slice of a mapped file starting at a line
+    // start, numbered from 1 (parallel_vertices.cpp adds the lines before).
+    TextReader(std::string path, std::string_view bytes, LineSource::Borrowed);
 
     const std::string& path() const noexcept { return path_; }
 
@@ -69,6 +72,20 @@ public:
     // deferred, and returns the hash of the whole file's bytes
     // (content_hash.hpp), the same for a stream as for a regular file.
     std::uint64_t finish();
+
+    // For a regular file: its bytes, and the offset of the byte after the
+    // current line.
+    std::string_view bytes() const noexcept { return source_.bytes(); }
+    std::uint64_t offset() const noexcept { return source_.offset(); }
+    // For a regular file: goes on after line `line`, which ends before byte
+    // `offset`, its lines up to there read by other threads (see
+    // LineSource::resume_at), and with `hash` as the file's content hash.
+    void resume_at(std::uint64_t offset, std::size_t line, std::uint64_t hash) noexcept {
+        source_.resume_at(offset, line);
+        source_.adopt_hash(hash);
+        line_ = line;
+        pos_ = data_end_ = nullptr;
+    }
 
     // The current line claims that at least `bytes` bytes follow it (a
     // header's counts); if not, InputError on this line with
@@ -137,6 +154,8 @@ public:
     void check(TextReader& in, std::int64_t id, std::size_t k, const WarningSink& warn);
     // Stops further reports (the caller already warned about the numbering).
     void silence() noexcept { warned_ = true; }
+    // The warning check() gives for `id` where `expected` was expected.
+    static std::string jump_message(std::string_view kind, std::int64_t id, std::int64_t expected);
 
 private:
     std::string_view kind_;

@@ -40,9 +40,11 @@ struct ReadResult {
 // A .node file.  The first vertex's index (0 or 1) fixes `base`, which the
 // caller passes to the readers of the run's other files.  When the file has
 // no vertices, or its first index is neither 0 nor 1 (Triangle then keeps
-// its default), `base` is `default_base` (1, or 0 for -z).
+// its default), `base` is `default_base` (1, or 0 for -z).  With `threads`
+// above 1 a large regular file's vertex lines are parsed on that many
+// threads; the values, errors and warnings are those of one thread.
 ReadResult<NodeSet> read_node(const std::string& path, const WarningSink& warn,
-                              int default_base = 1);
+                              int default_base = 1, unsigned threads = 1);
 
 // The vertices of a .node its caller has read already: their count, the
 // base and the content hash read_node() gave.
@@ -58,9 +60,11 @@ struct KnownNodes {
 // base of that .node file.  With `known`, that .node is not read again (it
 // may be a pipe, which can be read only once): data.nodes stays empty, and
 // the base and hash are known's.  Segment endpoints are validated against
-// the vertices and the base.
+// the vertices and the base.  `threads` as for read_node (the vertex list;
+// the rest of the file is read on one thread).
 ReadResult<PolyFile> read_poly(const std::string& path, const WarningSink& warn,
-                               int default_base = 1, const KnownNodes* known = nullptr);
+                               int default_base = 1, const KnownNodes* known = nullptr,
+                               unsigned threads = 1);
 
 // An .ele file of a mesh whose vertices (vertex_count of them) number from
 // `base`.  Corners out of [base, base + vertex_count) are an InputError.

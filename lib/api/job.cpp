@@ -131,11 +131,16 @@ void to_arrays(const Options& options, api::Input& input, bool materialise, Mesh
     // derived from them get them.
     const bool neighbours = options.write_neighbours || options.write_edges ||
                             options.write_voronoi || options.write_off || options.order == 2;
-    materialise = materialise || neighbours || options.jettison;
+    api::ArrayChoices choices;
+    choices.neighbours = neighbours;
+    choices.materialise = materialise || neighbours || options.jettison;
+    // A node's mesh vertex: for the edge markers of .edge and -o2, and for
+    // jettisoning (write_outputs.cpp).
+    choices.mesh_ids = options.write_edges || options.order == 2 || options.jettison;
+    choices.threads = parallel::thread_count(options.threads);
     m.arrays =
         api::mesh_to_arrays(m.tri.mesh, std::move(input.nodes.data), result.input_vertices,
-                            m.tri.triangle_attribute_count, m.tri.region_attributes, neighbours,
-                            materialise, parallel::thread_count(options.threads));
+                            m.tri.triangle_attribute_count, m.tri.region_attributes, choices);
     result.vertices = m.arrays.nodes.size() - m.tri.duplicates;
     result.triangles = m.arrays.triangle_count;
     result.hull_edges = m.arrays.hull_edge_count;

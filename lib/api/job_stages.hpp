@@ -100,13 +100,22 @@ std::vector<std::string> refinement_lines(const Refinement& refinement);
 // vertex on the boundary gets 1 and any other 0. Triangles get `attribute_count` attributes each
 // from `region_attributes` by their region index.  The neighbour array is filled only when asked
 // for; without `materialise` the triangles stay in the mesh, which must then outlive the arrays
-// (MeshArrays::stream), and so must region_attributes. The coordinates of all vertices come from
+// (MeshArrays::stream), and so must region_attributes. Without `mesh_ids` MeshArrays::mesh_ids
+// stays empty. The coordinates of all vertices come from
 // the mesh, which keeps the input ones exactly: the caller may free nodes.xy once the mesh is
 // built, as long as the other arrays of `nodes` keep their input_count entries.  The passes over
 // the vertices and the triangles run on `threads` threads; the arrays do not depend on it.
+struct ArrayChoices {
+    bool neighbours = false;   // fill the neighbour array
+    bool materialise = false;  // copy the triangles out of the mesh
+    // Fill MeshArrays::mesh_ids (4 bytes a vertex, at the moment memory use
+    // peaks): the outputs that need a node's mesh vertex want them.
+    bool mesh_ids = true;
+    unsigned threads = 1;
+};
 MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t input_count,
                           std::uint32_t attribute_count, std::span<const double> region_attributes,
-                          bool with_neighbours, bool materialise, unsigned threads = 1);
+                          const ArrayChoices& choices);
 
 // The marker of mesh edge {a, b} (Triangle's rules): a subsegment's own
 // marker if non-zero, else 1 on the boundary, else 0.

@@ -94,13 +94,14 @@ TriangleNumbers triangle_numbers(const mesh::Mesh& mesh) {
 
 // Vertex numbers: the input vertices keep theirs (duplicates included, as
 // Triangle writes them); added vertices follow, in id order, skipping ids
-// claimed but never used.  Fills the coordinates in `nodes` and `mesh_ids`;
+// claimed but never used.  Fills the coordinates in `nodes` and, unless it
+// is null, `mesh_ids`;
 // returns each mesh vertex's number (none for the skipped).  On `threads`
 // threads, a chunk of ids at a time: each chunk counts its vertices, then
 // numbers them from the count of the chunks before it, which gives the
 // numbers one pass in id order gives.
 VertexNumbers number_vertices(const mesh::Mesh& mesh, std::size_t input_count, NodeSet& nodes,
-                              std::vector<std::uint32_t>& mesh_ids, unsigned threads) {
+                              std::vector<std::uint32_t>* mesh_ids, unsigned threads) {
     constexpr unsigned bits = VertexNumbers::bits;
     const auto end =
         static_cast<std::uint32_t>(std::max<std::size_t>(mesh.vertex_end(), input_count));
@@ -126,7 +127,7 @@ VertexNumbers number_vertices(const mesh::Mesh& mesh, std::size_t input_count, N
     });
     for (std::size_t i = 0; i < chunks.size(); ++i) first[i + 1] += first[i];
     nodes.xy.resize(2 * std::size_t{first.back()});
-    mesh_ids.resize(first.back());
+    if (mesh_ids != nullptr) mesh_ids->resize(first.back());
     mesh::run_pieces(threads, chunks.size(), [&](std::size_t i) {
         const mesh::ChunkIds ids = ids_of(i);
         std::uint32_t n = first[i];
@@ -136,7 +137,7 @@ VertexNumbers number_vertices(const mesh::Mesh& mesh, std::size_t input_count, N
                 continue;
             }
             number[v] = n;
-            mesh_ids[n] = v;
+            if (mesh_ids != nullptr) (*mesh_ids)[n] = v;
             const auto& p = mesh.point(mesh::VertexId{v});
             nodes.xy[2 * std::size_t{n}] = p.x;
             nodes.xy[2 * std::size_t{n} + 1] = p.y;
@@ -403,10 +404,18 @@ void set_vertex_markers(const mesh::Mesh& mesh, const VertexNumbers& number,
 
 MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t input_count,
                           std::uint32_t attribute_count, std::span<const double> region_attributes,
-                          bool with_neighbours, bool materialise, unsigned threads) {
+                          const ArrayChoices& choices) {
+    const bool with_neighbours = choices.neighbours;
+    const unsigned threads = choices.threads;
     MeshArrays out;
-    VertexNumbers number = number_vertices(mesh, input_count, nodes, out.mesh_ids, threads);
+    // The added vertices' attributes are copied through the mesh ids.
+    const bool copies_attributes =
+        nodes.attribute_count != 0 && mesh.attributes().width() == nodes.attribute_count;
+    const bool mesh_ids = choices.mesh_ids || copies_attributes;
+    VertexNumbers number =
+        number_vertices(mesh, input_count, nodes, mesh_ids ? &out.mesh_ids : nullptr, threads);
     copy_added_attributes(mesh, input_count, out.mesh_ids, nodes);
+    if (!choices.mesh_ids) std::vector<std::uint32_t>().swap(out.mesh_ids);
 
     TriangleNumbers triangle_number;
     TriangleWalk walk = walk_triangles(mesh, with_neighbours, triangle_number, threads);
@@ -427,7 +436,7 @@ MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t inp
         out.segments.endpoints.push_back(number[e.to]);
         out.segments.markers.push_back(marker(e.from, e.to, e.hull));
     }
-    if (materialise)
+    if (choices.materialise)
         copy_triangles(mesh, number, triangle_number, with_neighbours, region_attributes, out);
     else
         out.stream = triangle_stream(mesh, std::move(number), std::move(walk.anchors), count,

@@ -57,9 +57,9 @@ TEST_CASE("a streamed mesh's triangles are read in runs as in order", "[stream]"
     // One attribute per triangle: its region's (all region 0 here).
     const std::vector<double> regions{2.5};
     const api::MeshArrays streamed =
-        api::mesh_to_arrays(mesh, nodes, points.size(), 1, regions, false, false);
+        api::mesh_to_arrays(mesh, nodes, points.size(), 1, regions, api::ArrayChoices{});
     const api::MeshArrays copied =
-        api::mesh_to_arrays(mesh, nodes, points.size(), 1, regions, false, true);
+        api::mesh_to_arrays(mesh, nodes, points.size(), 1, regions, {false, true, true, 1});
     REQUIRE(streamed.stream);
     const io::EleSource source = api::triangle_source(streamed);
     REQUIRE(source.read);
@@ -155,8 +155,8 @@ TEST_CASE("the arrays number the mesh as one pass in id order would", "[stream]"
     for (const unsigned threads : {1u, 3u}) {
         for (const bool materialise : {false, true}) {
             INFO(threads << " threads, materialise " << materialise);
-            const api::MeshArrays arrays = api::mesh_to_arrays(mesh, nodes, input, 0, regions,
-                                                               materialise, materialise, threads);
+            const api::MeshArrays arrays = api::mesh_to_arrays(
+                mesh, nodes, input, 0, regions, {materialise, materialise, true, threads});
             CHECK(arrays.mesh_ids == ids);
             bool points_match = arrays.nodes.xy.size() == 2 * ids.size();
             for (std::size_t i = 0; points_match && i < ids.size(); ++i)

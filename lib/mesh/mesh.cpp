@@ -5,6 +5,7 @@
 #include "mesh/traverse.hpp"
 
 #include <string>
+#include <utility>
 
 #include <sys/mman.h>
 
@@ -61,7 +62,11 @@ Mesh::Mesh(Mesh&& other) noexcept
       spare_mutex_(std::move(other.spare_mutex_)),
       spares_(std::move(other.spares_)),
       triangle_tails_(std::move(other.triangle_tails_)),
-      vertex_tails_(std::move(other.vertex_tails_)) {
+      vertex_tails_(std::move(other.vertex_tails_)),
+      triangle_holes_(std::move(other.triangle_holes_)),
+      vertex_holes_(std::move(other.vertex_holes_)),
+      triangle_holes_end_(std::exchange(other.triangle_holes_end_, 0)),
+      vertex_holes_end_(std::exchange(other.vertex_holes_end_, 0)) {
     other.triangle_chunks_ = 0;
     other.vertex_end_ = 0;
 }
@@ -80,6 +85,10 @@ Mesh& Mesh::operator=(Mesh&& other) noexcept {
         spares_ = std::move(other.spares_);
         triangle_tails_ = std::move(other.triangle_tails_);
         vertex_tails_ = std::move(other.vertex_tails_);
+        triangle_holes_ = std::move(other.triangle_holes_);
+        vertex_holes_ = std::move(other.vertex_holes_);
+        triangle_holes_end_ = std::exchange(other.triangle_holes_end_, 0);
+        vertex_holes_end_ = std::exchange(other.vertex_holes_end_, 0);
         other.triangle_chunks_ = 0;
         other.vertex_end_ = 0;
     }
@@ -170,6 +179,28 @@ VertexId Mesh::claim_vertex_chunk_at(std::uint32_t c) {
     kinds_.ensure(c);
     raise_to(vertex_end_, static_cast<std::uint32_t>(end));
     return VertexId{c << vertex_chunk_bits};
+}
+
+namespace {
+
+// The holes below `end` among chunks for which claimed(c) tells: those of
+// `holes` still unclaimed, then the unclaimed ones from `scanned` on.
+template <class Claimed>
+void refresh(std::vector<std::uint32_t>& holes, std::uint32_t& scanned, std::uint32_t end,
+             const Claimed& claimed) {
+    std::erase_if(holes, claimed);
+    for (std::uint32_t c = scanned; c < end; ++c)
+        if (!claimed(c)) holes.push_back(c);
+    if (end > scanned) scanned = end;
+}
+
+}  // namespace
+
+void Mesh::refresh_holes() {
+    refresh(triangle_holes_, triangle_holes_end_, triangle_chunks_claimed(),
+            [this](std::uint32_t c) { return triangles_.has_chunk(c); });
+    refresh(vertex_holes_, vertex_holes_end_, vertex_chunks_claimed(),
+            [this](std::uint32_t c) { return kinds_.has_chunk(c); });
 }
 
 namespace {

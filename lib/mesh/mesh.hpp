@@ -129,6 +129,13 @@ public:
         return static_cast<std::uint32_t>((std::uint64_t{vertex_end()} + PointTable::chunk_mask) >>
                                           vertex_chunk_bits);
     }
+    // The holes: the chunks below the first above every id claimed that no
+    // one claimed, ascending, as found by the last refresh_holes() (which
+    // must not run while a pool claims ids).  The lanes of the next round
+    // claim them first (pool.hpp).
+    void refresh_holes();
+    std::span<const std::uint32_t> triangle_holes() const { return triangle_holes_; }
+    std::span<const std::uint32_t> vertex_holes() const { return vertex_holes_; }
     struct SpareSlots;
     // Claims triangle chunk c (its slots, as claim_triangle_chunk gives them)
     // or vertex chunk c (its ids; the first is returned).  Thread-safe;
@@ -194,6 +201,9 @@ private:
     // written under spare_mutex_: triangle_chunk_used, vertex_chunk_used.
     std::vector<std::uint32_t> triangle_tails_;
     std::vector<std::uint32_t> vertex_tails_;
+    // The holes, and the chunk their lists were complete up to.
+    std::vector<std::uint32_t> triangle_holes_, vertex_holes_;
+    std::uint32_t triangle_holes_end_ = 0, vertex_holes_end_ = 0;
 };
 
 }  // namespace gpdr::mesh

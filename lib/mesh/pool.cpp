@@ -32,8 +32,9 @@ void Pool::refill() {
     if (on_lane_) {
         // (Never the slots another pool gave back: which lane took them
         // would depend on timing.)
-        spare_ = mesh_->claim_triangle_chunk_at(lane_.triangle_chunk + lane_.index +
-                                                lane_triangle_chunks_++ * lane_.count);
+        const std::uint32_t place = lane_triangle_chunks_++ * lane_.count + lane_.index;
+        spare_ = mesh_->claim_triangle_chunk_at(
+            Lane::at(lane_.triangle_holes, lane_.triangle_chunk, place));
     } else if (!mesh_->take_back(spare_)) {
         spare_ = mesh_->claim_triangle_chunk();
     }
@@ -41,10 +42,13 @@ void Pool::refill() {
 
 VertexId Pool::new_vertex(const Point& p, VertexKind kind) {
     if (vertex_next_ == vertex_end_) {
-        vertex_next_ =
-            on_lane_ ? index(mesh_->claim_vertex_chunk_at(lane_.vertex_chunk + lane_.index +
-                                                          lane_vertex_chunks_++ * lane_.count))
-                     : index(mesh_->claim_vertices(vertex_block_));
+        if (on_lane_) {
+            const std::uint32_t place = lane_vertex_chunks_++ * lane_.count + lane_.index;
+            vertex_next_ = index(mesh_->claim_vertex_chunk_at(
+                Lane::at(lane_.vertex_holes, lane_.vertex_chunk, place)));
+        } else {
+            vertex_next_ = index(mesh_->claim_vertices(vertex_block_));
+        }
         vertex_end_ = vertex_next_ + vertex_block_;
     }
     const VertexId v{vertex_next_++};

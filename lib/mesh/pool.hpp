@@ -16,18 +16,20 @@
 // the finished mesh stop where each chunk's used part ends.
 //
 // A pool on a LANE (the deterministic parallel refiner's) claims by a fixed
-// rule instead: lane k of n takes triangle chunks and vertex chunks
-// base + k, base + n + k, base + 2n + k, ... of the ids above those claimed
-// when the lane was set (move_to_lane: before every round, n being the
-// lanes the round uses).  The ids it hands out then depend only on the
-// lanes' settings and the sequence of creations and destructions asked of
-// it, whatever other lanes do at the same time and whichever thread runs
-// it.
+// rule instead: lane k of n takes the chunks at places k, n + k, 2n + k, ...
+// of a list fixed when the lanes were set (move_to_lane: before every round,
+// n being the lanes the round uses): first the holes, the chunks below
+// every id claimed that no one claimed (the rounds before left them: their
+// lanes claim unevenly), then the chunks above every id claimed, in order.
+// The ids it hands out then depend only on the lanes' settings and the
+// sequence of creations and destructions asked of it, whatever other lanes
+// do at the same time and whichever thread runs it.
 //
 // A pool must not outlive its mesh.  When destroyed it gives its unused slots
 // back to the mesh, and the next pool created starts from them.
 
 #include <cstdint>
+#include <span>
 
 #include "mesh/mesh.hpp"
 
@@ -36,11 +38,28 @@ namespace gpdr::mesh {
 struct Lane {
     std::uint32_t index = 0;           // k
     std::uint32_t count = 1;           // n
-    std::uint32_t triangle_chunk = 0;  // the bases: the first chunks of the lanes' ids
+    std::uint32_t triangle_chunk = 0;  // the bases: the first chunks above every id claimed
     std::uint32_t vertex_chunk = 0;
-    // The bases for lanes made on `mesh` now: the chunks above every id claimed.
-    static Lane first(const Mesh& mesh, std::uint32_t count) {
-        return {0, count, mesh.triangle_chunks_claimed(), mesh.vertex_chunks_claimed()};
+    // The holes below the bases, ascending (the mesh's lists: they stay put
+    // until the next Lane::first).
+    std::span<const std::uint32_t> triangle_holes;
+    std::span<const std::uint32_t> vertex_holes;
+
+    // The lanes' list for lanes made on `mesh` now.  Not thread-safe: call
+    // it while no pool claims ids.
+    static Lane first(Mesh& mesh, std::uint32_t count) {
+        mesh.refresh_holes();
+        return {0,
+                count,
+                mesh.triangle_chunks_claimed(),
+                mesh.vertex_chunks_claimed(),
+                mesh.triangle_holes(),
+                mesh.vertex_holes()};
+    }
+    // The chunk at place p of the list: a hole, or a chunk above the base.
+    static std::uint32_t at(std::span<const std::uint32_t> holes, std::uint32_t base,
+                            std::uint32_t p) {
+        return p < holes.size() ? holes[p] : base + (p - static_cast<std::uint32_t>(holes.size()));
     }
 };
 

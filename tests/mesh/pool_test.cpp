@@ -3,6 +3,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <memory>
 #include <set>
 #include <thread>
 #include <vector>
@@ -210,4 +211,44 @@ TEST_CASE("the unused ends of lanes' chunks are known and passed over", "[mesh][
     Pool again(mesh);
     const TriangleId t = again.create(VertexId{0}, VertexId{1}, VertexId{2});
     CHECK(mesh.triangle_chunk_used(index(t) >> Mesh::triangle_chunk_bits) == chunk);
+}
+
+TEST_CASE("the next round's lanes claim the chunks the last one left unclaimed", "[mesh][pool]") {
+    constexpr std::uint32_t chunk = Mesh::TriangleTable::chunk_size;
+    Mesh mesh;
+    mesh.add_vertices(std::vector<Point>{{0, 0}, {1, 0}, {0, 1}}, VertexKind::input);
+    const auto make = [](Pool& pool, std::uint32_t n) {
+        for (std::uint32_t i = 0; i < n; ++i) pool.create(VertexId{0}, VertexId{1}, VertexId{2});
+    };
+    // Round 1, four lanes: lane 0 fills three chunks (places 0, 4, 8), the
+    // others one each (places 1, 2, 3): chunks 5, 6, 7 stay holes.
+    std::vector<std::unique_ptr<Pool>> lanes;
+    const Lane first = Lane::first(mesh, 4);
+    CHECK(first.triangle_holes.empty());
+    for (std::uint32_t k = 0; k < 4; ++k) {
+        Lane lane = first;
+        lane.index = k;
+        lanes.push_back(std::make_unique<Pool>(mesh, lane));
+    }
+    make(*lanes[0], 3 * chunk);
+    for (std::uint32_t k = 1; k < 4; ++k) make(*lanes[k], chunk);
+    CHECK(mesh.triangle_end() == 9 * chunk);
+    // Round 2, three lanes: the holes first, then chunks 9, 10, ...
+    const Lane second = Lane::first(mesh, 3);
+    CHECK(std::vector<std::uint32_t>(second.triangle_holes.begin(), second.triangle_holes.end()) ==
+          std::vector<std::uint32_t>{5, 6, 7});
+    for (std::uint32_t k = 0; k < 3; ++k) {
+        Lane lane = second;
+        lane.index = k;
+        lanes[k]->move_to_lane(lane);
+    }
+    TriangleId at_hole = lanes[1]->create(VertexId{0}, VertexId{1}, VertexId{2});
+    CHECK(index(at_hole) == 6 * chunk);  // lane 1's first place: the second hole
+    make(*lanes[1], chunk);              // its next place, 4, is chunk 9 + (4 - 3)
+    CHECK(mesh.has_triangle_chunk(10));
+    CHECK_FALSE(mesh.has_triangle_chunk(9));
+    // Round 3: the holes left are chunks 5, 7 and 9.
+    const Lane third = Lane::first(mesh, 1);
+    CHECK(std::vector<std::uint32_t>(third.triangle_holes.begin(), third.triangle_holes.end()) ==
+          std::vector<std::uint32_t>{5, 7, 9});
 }

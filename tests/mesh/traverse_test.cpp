@@ -61,9 +61,10 @@ TEST_CASE("a range of ids visits its live triangles, across chunks nobody claime
     // and end anywhere.  Every range must see exactly the live triangles a
     // look at each id in it finds (a missing chunk reads as dead slots).
     Mesh mesh = mesh_from_triangles({{0, 0}, {1, 0}, {1, 1}}, {{0, 1, 2}});
-    const Lane lane = Lane::first(mesh, 3);
+    Lane lane = Lane::first(mesh, 3);
+    lane.index = 2;
     {
-        Pool pool(mesh, Lane{2, 3, lane.triangle_chunk, lane.vertex_chunk});
+        Pool pool(mesh, lane);
         const std::uint32_t per_chunk = Mesh::TriangleTable::chunk_size;
         for (std::uint32_t i = 0; i < 2 * per_chunk + 10; ++i) {
             const TriangleId t = pool.create(VertexId{0}, VertexId{1}, VertexId{2});

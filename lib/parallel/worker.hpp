@@ -64,6 +64,22 @@ struct MasterInfo {
     std::vector<Routed> inbox;  // work that arrived while it was held
 };
 
+// Splitting where the work is (Worker::refine_own_levels).  A run that has
+// made split_budget triangles splits its leaf as soon as the work left lies
+// 2 + early_split_granularity σ levels below it, instead of refining all
+// its own levels (1 + g) first: where the mesh is densest, the leaves go
+// one or two levels deeper than the granularity alone would take them, so
+// that no run makes much more than the budget and many more runs share a
+// round; elsewhere a leaf's run never reaches the budget and the tree
+// stays as coarse as g makes it.  Counted in triangles created, so that
+// the rounds stay the same on any number of threads.  At -g5 a full run
+// makes about 60,000 triangles; 10,000 lets the rounds' work / span reach
+// about 40 on the graded pipe and the square (docs/performance.md).
+inline constexpr std::uint64_t split_budget = 10000;
+inline constexpr int early_split_granularity = 3;
+// Entries a run takes between two looks at its budget.
+inline constexpr std::uint64_t budget_slice = 256;
+
 // Everything a leaf has beyond its quadtree node (Node::state); made by the
 // worker that splits its parent.
 struct LeafState {
@@ -231,6 +247,9 @@ private:
     void deliver(const Routed& r, NodeId splitting);
     bool should_split(const Node& n, LeafState& state);
     bool refine_while_blocked(const Node& n, LeafState& state);
+    bool refine_own_levels(const Node& n, LeafState& state, int last_level, int last_size_level,
+                           bool& split_now);
+    bool may_split_early(const Node& n, LeafState& state);
     // run()'s steps.
     bool refine_window(const Node& n, LeafState& state);
     void route_handed_off(LeafState& state);
@@ -271,6 +290,8 @@ private:
     };
     CachedCell cache_[256];
     refine::PlacementScratch scratch_;
+    // report.triangles_created when the current run began (split_budget).
+    std::uint64_t run_start_ = 0;
 };
 
 }  // namespace gpdr::parallel

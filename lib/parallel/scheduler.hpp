@@ -112,6 +112,15 @@ private:
     // Publishes a split its lane made: children first, then the parent.
     void publish_split(NodeId leaf);
     Info& info(NodeId id) { return tree_.node(id).state->master; }
+    // Whether leaf x lies in a zone of the round.  The flags are kept here,
+    // by node id, not in the leaf's state: the zone searches read the flag of
+    // every leaf they meet, and the states lie wherever their workers made
+    // them (a cache miss each).
+    bool held(NodeId x) const { return x < held_.size() && held_[x] != 0; }
+    void set_held(NodeId x, bool held) {
+        if (x >= held_.size()) held_.resize(tree_.node_end());
+        held_[x] = held ? 1 : 0;
+    }
     bool has_work(NodeId leaf) const;
     // Subsegments to split first, anywhere, then larger triangles first
     // across the whole tree (Miller's order, as far as leaves allow).
@@ -126,6 +135,7 @@ private:
     // The leaves offered since the last round, each once (MasterInfo::queued).
     std::vector<NodeId> waiting_;
     std::vector<NodeId> zone_scratch_;
+    std::vector<std::uint8_t> held_;  // by node id (held())
 };
 
 // Checked mode: the quadtree invariants on a quiescent mesh (no worker

@@ -459,10 +459,13 @@ bool Worker::refine_own_levels(const Node& n, LeafState& state, int last_level,
 
 // should_split's test with early_split_granularity for the leaf's levels:
 // the work left is for triangles at least 2 + that many levels below the
-// leaf, and its count, made exact, is 0.  The level is looked at first: it
-// costs nothing, where the count costs the counting of the run's batch.
+// leaf, and its count, made exact, is 0.  Only triangles poor by size alone
+// may be left: the window's order across levels for the others (rule 3,
+// refine/order.hpp) keeps the meshes small at high angles, and a split
+// would cut it short.  The queues are looked at first: they cost nothing,
+// where the count costs the counting of the run's batch.
 bool Worker::may_split_early(const Node& n, LeafState& state) {
-    if (stopped || n.level >= max_level) return false;
+    if (stopped || n.level >= max_level || !state.work.size_bins_only()) return false;
     const int lowest = state.work.lowest_level();
     if (lowest < 2 + std::min(early_split_granularity, granularity_at(n))) return false;
     sort_created();

@@ -59,7 +59,6 @@ inline void push(refine::Leaf& work, const Routed& r) {
 // The scheduler's bookkeeping for a leaf (scheduler.hpp), kept by the
 // calling thread between rounds; no lane touches it.
 struct MasterInfo {
-    bool held = false;          // in the zone of a leaf of the round
     bool queued = false;        // waiting for the next round (offered once)
     std::vector<Routed> inbox;  // work that arrived while it was held
 };

@@ -44,7 +44,7 @@ void Scheduler::deliver(const Routed& r) {
     const NodeId x = tree_.leaf_at(r.at);
     ++report_.handed_off_master;
     if (held(x)) {
-        info(x).inbox.push_back(r);  // its zone is being refined: later
+        to_inbox(x, r);  // its zone is being refined: later
         return;
     }
     push(tree_.node(x).state->work, r);
@@ -52,12 +52,14 @@ void Scheduler::deliver(const Routed& r) {
 }
 
 void Scheduler::flush_inbox(NodeId leaf) {
+    if (!flag(leaf, inbox_flag)) return;
+    set_flag(leaf, inbox_flag, false);
     std::vector<Routed> items;
     items.swap(info(leaf).inbox);
     for (const Routed& r : items) {
         const NodeId x = tree_.leaf_at(r.at);  // the leaf may have split meanwhile
         if (held(x) && x != leaf) {
-            info(x).inbox.push_back(r);
+            to_inbox(x, r);
             continue;
         }
         push(tree_.node(x).state->work, r);

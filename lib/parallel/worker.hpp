@@ -66,15 +66,17 @@ struct MasterInfo {
 // Splitting where the work is (Worker::refine_own_levels).  A run that has
 // made split_budget triangles splits its leaf as soon as the work left lies
 // 2 + early_split_granularity σ levels below it, instead of refining all
-// its own levels (1 + g) first: where the mesh is densest, the leaves go
-// one or two levels deeper than the granularity alone would take them, so
-// that no run makes much more than the budget and many more runs share a
-// round; elsewhere a leaf's run never reaches the budget and the tree
-// stays as coarse as g makes it.  Counted in triangles created, so that
-// the rounds stay the same on any number of threads.  At -g5 a full run
-// makes about 60,000 triangles; 10,000 lets the rounds' work / span reach
-// about 40 on the graded pipe and the square (docs/performance.md).
-inline constexpr std::uint64_t split_budget = 10000;
+// its own levels (1 + g) first: where the mesh is densest, the leaves go a
+// level deeper than the granularity alone would take them, so that fewer
+// runs make much more than the budget and more runs share a round;
+// elsewhere a leaf's run never reaches the budget and the tree stays as
+// coarse as g makes it.  Counted in triangles created, so that the rounds
+// stay the same on any number of threads.  At -g5 a full run makes about
+// 60,000 triangles.  Smaller budgets give more parallelism but smaller
+// leaves, which cost two threads more than it gives them: 10,000 took
+// work / span to 38 on the graded pipe and the square, but -j2 1.16 times
+// as long; 30,000 gives 17 and 16 for 1.04 (docs/performance.md).
+inline constexpr std::uint64_t split_budget = 30000;
 inline constexpr int early_split_granularity = 3;
 // Entries a run takes between two looks at its budget.
 inline constexpr std::uint64_t budget_slice = 256;

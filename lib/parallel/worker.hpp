@@ -75,8 +75,9 @@ struct MasterInfo {
 // 60,000 triangles.  Smaller budgets give more parallelism but smaller
 // leaves, which cost two threads more than it gives them: 10,000 took
 // work / span to 38 on the graded pipe and the square, but -j2 1.16 times
-// as long; 30,000 gives 17 and 16 for 1.04 (docs/performance.md).
-inline constexpr std::uint64_t split_budget = 30000;
+// as long, 30,000 to 17 and 16 for 1.03-1.06; 40,000 gives 15.4 and 14.0
+// for 1.02 (docs/performance.md).
+inline constexpr std::uint64_t split_budget = 40000;
 inline constexpr int early_split_granularity = 3;
 // Entries a run takes between two looks at its budget.
 inline constexpr std::uint64_t budget_slice = 256;

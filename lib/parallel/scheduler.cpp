@@ -35,17 +35,16 @@ void Scheduler::offer(NodeId leaf) {
     // Every change to a leaf's work is followed by an offer; the next round
     // sorts its candidates afresh, so a leaf waits once, unsorted.
     Info& i = info(leaf);
-    if (i.held || tree_.node(leaf).get_kind() != NodeKind::leaf || !has_work(leaf)) return;
+    if (held(leaf) || tree_.node(leaf).get_kind() != NodeKind::leaf || !has_work(leaf)) return;
     if (!i.queued) waiting_.push_back(leaf);
     i.queued = true;
 }
 
 void Scheduler::deliver(const Routed& r) {
     const NodeId x = tree_.leaf_at(r.at);
-    Info& i = info(x);
     ++report_.handed_off_master;
-    if (i.held) {
-        i.inbox.push_back(r);  // its zone is being refined: later
+    if (held(x)) {
+        to_inbox(x, r);  // its zone is being refined: later
         return;
     }
     push(tree_.node(x).state->work, r);
@@ -53,12 +52,14 @@ void Scheduler::deliver(const Routed& r) {
 }
 
 void Scheduler::flush_inbox(NodeId leaf) {
+    if (!flag(leaf, inbox_flag)) return;
+    set_flag(leaf, inbox_flag, false);
     std::vector<Routed> items;
     items.swap(info(leaf).inbox);
     for (const Routed& r : items) {
         const NodeId x = tree_.leaf_at(r.at);  // the leaf may have split meanwhile
-        if (info(x).held && x != leaf) {
-            info(x).inbox.push_back(r);
+        if (held(x) && x != leaf) {
+            to_inbox(x, r);
             continue;
         }
         push(tree_.node(x).state->work, r);
@@ -84,7 +85,7 @@ void Scheduler::hold(int entry, NodeId chosen) {
     a.leaf = chosen;
     a.zone = zone_scratch_;
     for (NodeId z : a.zone) {
-        info(z).held = true;
+        set_held(z, true);
         tree_.node(z).owner.store(entry + 1, std::memory_order_relaxed);
         flush_inbox(z);
     }
@@ -123,7 +124,7 @@ bool Scheduler::touches_held(NodeId x) {
         for (int j = 0; j < 3; ++j) {
             if (i == 1 && j == 1) continue;
             const NodeId n = tree_.leaf_at({xs[i], ys[j]});
-            if (n != x && info(n).held) return true;
+            if (n != x && held(n)) return true;
         }
     return false;
 }
@@ -141,7 +142,7 @@ void Scheduler::plan_round(std::vector<NodeId>& round) {
     for (const NodeId x : waiting_) {
         Info& i = info(x);
         i.queued = false;
-        if (tree_.node(x).get_kind() != NodeKind::leaf || i.held || !has_work(x)) continue;
+        if (tree_.node(x).get_kind() != NodeKind::leaf || held(x) || !has_work(x)) continue;
         const Node& n = tree_.node(x);
         candidates.push_back({key(x), n.level, morton(n.ix, n.iy), x});
     }
@@ -151,11 +152,11 @@ void Scheduler::plan_round(std::vector<NodeId>& round) {
     });
     for (const Candidate& c : candidates) {
         if (serial_ && !round.empty()) break;
-        if (info(c.leaf).held) continue;  // in a zone taken: offered again when it completes
+        if (held(c.leaf)) continue;  // in a zone taken: offered again when it completes
         if (touches_held(c.leaf)) continue;
-        const NodeId held =
-            tree_.zone_until(c.leaf, zone_scratch_, [&](NodeId z) { return info(z).held; });
-        if (held != no_node) continue;
+        const NodeId blocking =
+            tree_.zone_until(c.leaf, zone_scratch_, [&](NodeId z) { return held(z); });
+        if (blocking != no_node) continue;
         const int entry = static_cast<int>(round.size());
         if (active_.size() <= static_cast<std::size_t>(entry)) active_.resize(entry + 1);
         hold(entry, c.leaf);
@@ -189,7 +190,7 @@ void Scheduler::complete(int entry, bool split, const std::vector<NodeId>& balan
     for (NodeId b : balanced) publish_split(b);
     report_.balance_splits += balanced.size();
     for (NodeId z : a.zone) {
-        info(z).held = false;
+        set_held(z, false);
         tree_.node(z).owner.store(0, std::memory_order_relaxed);
     }
     for (NodeId z : a.zone) {

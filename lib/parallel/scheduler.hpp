@@ -112,6 +112,25 @@ private:
     // Publishes a split its lane made: children first, then the parent.
     void publish_split(NodeId leaf);
     Info& info(NodeId id) { return tree_.node(id).state->master; }
+    // Per-node flags, kept here by node id rather than in the leaf's state:
+    // the zone searches read the held flag of every leaf they meet, and
+    // holding or freeing a zone looks at every zone leaf's inbox, while the
+    // states lie wherever their workers allocated them (a cache miss each).
+    enum : std::uint8_t {
+        held_flag = 1,   // in a zone of the round
+        inbox_flag = 2,  // MasterInfo::inbox is not empty
+    };
+    bool flag(NodeId x, std::uint8_t f) const { return x < flags_.size() && (flags_[x] & f) != 0; }
+    void set_flag(NodeId x, std::uint8_t f, bool on) {
+        if (x >= flags_.size()) flags_.resize(tree_.node_end());
+        flags_[x] = static_cast<std::uint8_t>(on ? flags_[x] | f : flags_[x] & ~f);
+    }
+    bool held(NodeId x) const { return flag(x, held_flag); }
+    void set_held(NodeId x, bool held) { set_flag(x, held_flag, held); }
+    void to_inbox(NodeId x, const Routed& r) {
+        info(x).inbox.push_back(r);
+        set_flag(x, inbox_flag, true);
+    }
     bool has_work(NodeId leaf) const;
     // Subsegments to split first, anywhere, then larger triangles first
     // across the whole tree (Miller's order, as far as leaves allow).
@@ -126,6 +145,7 @@ private:
     // The leaves offered since the last round, each once (MasterInfo::queued).
     std::vector<NodeId> waiting_;
     std::vector<NodeId> zone_scratch_;
+    std::vector<std::uint8_t> flags_;  // by node id (flag())
 };
 
 // Checked mode: the quadtree invariants on a quiescent mesh (no worker

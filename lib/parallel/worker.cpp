@@ -425,16 +425,52 @@ bool Worker::refine_window(const Node& n, LeafState& state) {
     }
     if (!split_now && !state.work.idle()) {
         const int lowest = state.work.lowest_level();
-        if (!refiner_.refine_levels(state.work, std::max(lowest, last_level),
-                                    std::max(lowest, own_levels))) {
+        if (!refine_own_levels(n, state, std::max(lowest, last_level),
+                               std::max(lowest, own_levels), split_now)) {
             stopped = true;
-        } else {
+        } else if (!split_now) {
             split_now = should_split(n, state);
         }
     }
     sort_created();
     flush_pending();
     return split_now;
+}
+
+// The window's levels, in budget_slice entries at a time: once the run has
+// made split_budget triangles, the leaf splits as soon as it may
+// (may_split_early), leaving the rest of its levels to its children (see
+// split_budget).  split_now says whether it stopped for that.  False when a
+// limit stopped refinement.
+bool Worker::refine_own_levels(const Node& n, LeafState& state, int last_level,
+                               int last_size_level, bool& split_now) {
+    split_now = false;
+    for (;;) {
+        std::uint64_t takes_left = budget_slice;
+        if (!refiner_.refine_levels(state.work, last_level, last_size_level, &takes_left))
+            return false;
+        if (takes_left != 0) return true;  // the window is done
+        if (report.triangles_created - run_start_ >= split_budget && may_split_early(n, state)) {
+            split_now = true;
+            return true;
+        }
+    }
+}
+
+// should_split's test with early_split_granularity for the leaf's levels:
+// the work left is for triangles at least 2 + that many levels below the
+// leaf, and its count, made exact, is 0.  Only triangles poor by size alone
+// may be left: the window's order across levels for the others (rule 3,
+// refine/order.hpp) keeps the meshes small at high angles, and a split
+// would cut it short.  The queues are looked at first: they cost nothing,
+// where the count costs the counting of the run's batch.
+bool Worker::may_split_early(const Node& n, LeafState& state) {
+    if (stopped || n.level >= max_level || !state.work.size_bins_only()) return false;
+    const int lowest = state.work.lowest_level();
+    if (lowest < 2 + std::min(early_split_granularity, granularity_at(n))) return false;
+    sort_created();
+    flush_pending();
+    return n.count.load(std::memory_order_relaxed) == 0;
 }
 
 // The work the leaf handed off: to leaves of the zone, or to the outbox.
@@ -466,6 +502,7 @@ void Worker::split_balance_candidates(const std::vector<NodeId>& balance) {
 
 bool Worker::run(NodeId leaf, std::int32_t tag, const std::vector<NodeId>& balance) {
     Stopwatch clock;
+    run_start_ = report.triangles_created;
     current_ = leaf;
     current_targets_ = deferral_targets(leaf);
     current_state_ = tree_.node(leaf).state;

@@ -59,10 +59,28 @@ inline void push(refine::Leaf& work, const Routed& r) {
 // The scheduler's bookkeeping for a leaf (scheduler.hpp), kept by the
 // calling thread between rounds; no lane touches it.
 struct MasterInfo {
-    bool held = false;          // in the zone of a leaf of the round
     bool queued = false;        // waiting for the next round (offered once)
     std::vector<Routed> inbox;  // work that arrived while it was held
 };
+
+// Splitting where the work is (Worker::refine_own_levels).  A run that has
+// made split_budget triangles splits its leaf as soon as the work left lies
+// 2 + early_split_granularity σ levels below it, instead of refining all
+// its own levels (1 + g) first: where the mesh is densest, the leaves go a
+// level deeper than the granularity alone would take them, so that fewer
+// runs make much more than the budget and more runs share a round;
+// elsewhere a leaf's run never reaches the budget and the tree stays as
+// coarse as g makes it.  Counted in triangles created, so that the rounds
+// stay the same on any number of threads.  At -g5 a full run makes about
+// 60,000 triangles.  Smaller budgets give more parallelism but smaller
+// leaves, which cost two threads more than it gives them: 10,000 took
+// work / span to 38 on the graded pipe and the square, but -j2 1.16 times
+// as long, 30,000 to 17 and 16 for 1.03-1.06; 40,000 gives 15.4 and 14.0
+// for 1.02 (docs/performance.md).
+inline constexpr std::uint64_t split_budget = 40000;
+inline constexpr int early_split_granularity = 3;
+// Entries a run takes between two looks at its budget.
+inline constexpr std::uint64_t budget_slice = 256;
 
 // Everything a leaf has beyond its quadtree node (Node::state); made by the
 // worker that splits its parent.
@@ -231,6 +249,9 @@ private:
     void deliver(const Routed& r, NodeId splitting);
     bool should_split(const Node& n, LeafState& state);
     bool refine_while_blocked(const Node& n, LeafState& state);
+    bool refine_own_levels(const Node& n, LeafState& state, int last_level, int last_size_level,
+                           bool& split_now);
+    bool may_split_early(const Node& n, LeafState& state);
     // run()'s steps.
     bool refine_window(const Node& n, LeafState& state);
     void route_handed_off(LeafState& state);
@@ -271,6 +292,8 @@ private:
     };
     CachedCell cache_[256];
     refine::PlacementScratch scratch_;
+    // report.triangles_created when the current run began (split_budget).
+    std::uint64_t run_start_ = 0;
 };
 
 }  // namespace gpdr::parallel

@@ -362,6 +362,10 @@ public:
         return true;
     }
     std::size_t subsegment_entries() const { return subsegments_.size(); }
+    // Whether every poor triangle queued waits in a size bin (poor only by
+    // size, PoorKind::size): none in the edge bins, whose order across the
+    // leaf's levels the mesh's size depends on.  Stale entries count.
+    bool size_bins_only() const { return edge_entries_ == 0; }
 
     bool idle() const { return poor_entries_ == 0 && subsegments_.empty(); }
 

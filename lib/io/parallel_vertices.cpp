@@ -155,8 +155,10 @@ private:
 struct Join {
     std::vector<std::size_t> first_vertex;  // per slice taken: its first vertex's index
     std::vector<std::size_t> taken;         // per slice taken: how many of its vertices
-    std::uint64_t end_offset = 0;           // after the last vertex line, from the slices' start
-    std::size_t end_line = 0;               // that line, counted from the slices' first
+    std::uint64_t end_offset = 0;           // after the last vertex line, in the file
+    std::size_t end_line = 0;               // that line
+    std::size_t found = 0;                  // the vertices found (fewer: the file ended first)
+    std::size_t lines = 0;                  // the file's lines, when it ended first
 };
 
 // The vertex numbering warnings of the vertices in `s` (the first at index
@@ -239,6 +241,46 @@ void size_for(NodeSet& nodes, const NodeHeader& h) {
     if (h.markers) nodes.markers.resize(h.count);
 }
 
+// Joins the parsed slices in file order, from offset `start` (line
+// `header_line`) on: which of each slice's vertices are taken and where
+// the list ends.  The first error before the list ends is the file's
+// (thrown), and the numbering warnings come before it.
+Join join_slices(const std::string& path, const std::vector<Slice>& slices, const NodeHeader& h,
+                 std::uint64_t start, std::size_t header_line, IdJoin& ids) {
+    Join join;
+    std::size_t lines_before = header_line;
+    std::uint64_t offset = start;
+    for (const Slice& s : slices) {
+        // Progress skips only slices past one that ends the list or fails.
+        if (!s.parsed) throw InternalError("parallel reading skipped a slice it needed");
+        ids.check(s, join.found, h.count, lines_before);
+        if (join.found + s.vertices >= h.count) {
+            const std::size_t n = h.count - join.found;
+            join.first_vertex.push_back(join.found);
+            join.taken.push_back(n);
+            if (n == 0) {
+                join.end_offset = offset;
+                join.end_line = lines_before;
+            } else {
+                const auto [end, line] = end_of_data_line(path, s, n);
+                join.end_offset = offset + end;
+                join.end_line = lines_before + line;
+            }
+            join.found = h.count;
+            return join;
+        }
+        if (s.error)
+            throw InputError(s.error->file(), lines_before + s.error->line(), s.error->reason());
+        join.first_vertex.push_back(join.found);
+        join.taken.push_back(s.vertices);
+        join.found += s.vertices;
+        lines_before += s.lines;
+        offset += s.bytes.size();
+    }
+    join.lines = lines_before;
+    return join;
+}
+
 }  // namespace
 
 std::size_t vertex_slices(const TextReader& in, const ReadSettings& settings) {
@@ -279,45 +321,14 @@ NodeSet read_vertices_in_parallel(TextReader& in, const NodeHeader& h, int defau
         }
     });
 
-    // Join in file order: the first error before the list ends is the
-    // file's, and the numbering warnings come before it.
     IdJoin ids(in.path(), default_base, warn);
-    Join join;
-    std::size_t found = 0, lines_before = header_line;
-    std::uint64_t offset = start;
-    for (const Slice& s : slices) {
-        // Progress skips only slices past one that ends the list or fails.
-        if (!s.parsed) throw InternalError("parallel reading skipped a slice it needed");
-        ids.check(s, found, h.count, lines_before);
-        if (found + s.vertices >= h.count) {
-            const std::size_t n = h.count - found;
-            join.first_vertex.push_back(found);
-            join.taken.push_back(n);
-            if (n == 0) {
-                join.end_offset = offset;
-                join.end_line = lines_before;
-            } else {
-                const auto [end, line] = end_of_data_line(in.path(), s, n);
-                join.end_offset = offset + end;
-                join.end_line = lines_before + line;
-            }
-            found = h.count;
-            break;
-        }
-        if (s.error)
-            throw InputError(s.error->file(), lines_before + s.error->line(), s.error->reason());
-        join.first_vertex.push_back(found);
-        join.taken.push_back(s.vertices);
-        found += s.vertices;
-        lines_before += s.lines;
-        offset += s.bytes.size();
-    }
+    const Join join = join_slices(in.path(), slices, h, start, header_line, ids);
     base = ids.base();
-    if (found < h.count) {
+    if (join.found < h.count) {
         // The file ended first: report it on the line after its last.
-        in.resume_at(file.size(), lines_before, hash);
+        in.resume_at(file.size(), join.lines, hash);
         in.next_line();
-        in.fail(fmt::format("expected {} vertices, found {}", h.count, found));
+        in.fail(fmt::format("expected {} vertices, found {}", h.count, join.found));
     }
 
     if (nodes.xy.size() != 2 * h.count) size_for(nodes, h);

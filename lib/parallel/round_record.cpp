@@ -7,21 +7,11 @@
 #include <numeric>
 
 #include "mesh/traverse.hpp"
+#include "parallel/morton.hpp"
 
 namespace gpdr::parallel {
 
 namespace {
-
-// The bits of x spread to the even positions of the result.
-std::uint64_t spread(std::uint32_t x) {
-    std::uint64_t v = x;
-    v = (v | (v << 16)) & 0x0000FFFF0000FFFFull;
-    v = (v | (v << 8)) & 0x00FF00FF00FF00FFull;
-    v = (v | (v << 4)) & 0x0F0F0F0F0F0F0F0Full;
-    v = (v | (v << 2)) & 0x3333333333333333ull;
-    v = (v | (v << 1)) & 0x5555555555555555ull;
-    return v;
-}
 
 constexpr std::uint32_t none = 0xFFFFFFFFu;
 
@@ -29,7 +19,7 @@ constexpr std::uint32_t none = 0xFFFFFFFFu;
 
 std::uint64_t Cell::morton() const {
     const int shift = max_level - level;
-    return spread(ix << shift) | (spread(iy << shift) << 1);
+    return parallel::morton(ix << shift, iy << shift);
 }
 
 namespace {

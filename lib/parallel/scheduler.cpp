@@ -12,6 +12,7 @@
 
 #include "geometry/constructions.hpp"
 #include "mesh/traverse.hpp"
+#include "parallel/morton.hpp"
 
 namespace gpdr::parallel {
 
@@ -95,25 +96,6 @@ void Scheduler::hold(int entry, NodeId chosen) {
         if (tree_.node(z).level + 2 <= level) a.balance.push_back(z);
     ++report_.assignments;
 }
-
-namespace {
-
-// The bits of x spread to the even positions of the result.
-std::uint64_t spread(std::uint32_t x) {
-    std::uint64_t v = x;
-    v = (v | (v << 16)) & 0x0000FFFF0000FFFFull;
-    v = (v | (v << 8)) & 0x00FF00FF00FF00FFull;
-    v = (v | (v << 4)) & 0x0F0F0F0F0F0F0F0Full;
-    v = (v | (v << 2)) & 0x3333333333333333ull;
-    v = (v | (v << 1)) & 0x5555555555555555ull;
-    return v;
-}
-
-// Morton code of cell (ix, iy): the order of cells of one level along a
-// Z curve, which the round's order uses where the key ties.
-std::uint64_t morton(std::uint32_t ix, std::uint32_t iy) { return spread(ix) | (spread(iy) << 1); }
-
-}  // namespace
 
 bool Scheduler::touches_held(NodeId x) {
     const Square s = tree_.square(x);

@@ -83,6 +83,70 @@ StarQuality star_quality(const PoorTriangle& t, const Point& p, double goal,
     return star;
 }
 
+namespace {
+
+// The grid: rows + 1 rows, the first at first_row of the way from the
+// off-centre's height to the lowest, each with 2 sides + 1 points.
+constexpr int rows = 8;
+constexpr int sides = 3;
+constexpr double first_row = 0.02;
+
+// The frame of the grid: the shortest edge's midpoint m, unit direction u
+// and inward normal n, the heights of its first and last rows over the
+// edge, the tangent of the bound and the edge's length.
+struct Grid {
+    Point m;
+    double ux, uy, nx, ny;
+    double top, bottom;
+    double tan_bound;
+    double shortest;
+};
+
+// The grid search of StarPlacement::place: the first point whose star
+// meets the goal, else the best by the Move rule against the off-centre,
+// whose star is `at_off` (a candidate itself when `off_usable`).
+Point best_on_grid(const PoorTriangle& t, const Grid& g, const Point& off,
+                   const StarQuality& at_off, bool off_usable, double goal,
+                   StarPlacement::Move move, PlacementScratch& scratch) {
+    using Move = StarPlacement::Move;
+    // Rows from the off-centre's height down towards pq; in each, the
+    // bisector first, then either side out to where the angles at p and q
+    // would fall under θ.  The first point whose star meets the goal wins;
+    // else the best by the Move rule, the off-centre unless one beats it.
+    Point best = off;
+    int best_poor = off_usable ? at_off.poor : std::numeric_limits<int>::max();
+    double best_nearest = off_usable ? at_off.nearest : 0;
+    const double top = g.top, bottom = g.bottom, l = g.shortest;
+    for (int i = 0; i <= rows; ++i) {
+        const double h = top - (top - bottom) * (i == 0 ? first_row : double(i) / (rows + 1));
+        const double half_width = std::max(0.0, h / g.tan_bound - 0.5 * l);
+        for (int j = 0; j <= 2 * sides; ++j) {
+            if (i == 0 && j == 0) continue;  // the off-centre itself
+            const int side = (j + 1) / 2 * (j % 2 == 1 ? 1 : -1);
+            const double a = half_width * side / (sides + 1);
+            const Point x{g.m.x + h * g.nx + a * g.ux, g.m.y + h * g.ny + a * g.uy};
+            if (!admissible_point(t, x)) continue;
+            const StarQuality s = star_quality(t, x, goal, scratch);
+            if (!s.located || s.encroaches) continue;
+            if (s.poor == 0) return x;
+            // Else, no worse than the off-centre's star in its smallest angle:
+            // fewer poor triangles, or as few and farther from its vertices.
+            if (move == Move::to_good_star || s.smallest_sine < at_off.smallest_sine) continue;
+            const bool fewer = s.poor < best_poor;
+            const bool farther =
+                move == Move::to_farther && s.poor == best_poor && s.nearest > best_nearest;
+            if (fewer || farther) {
+                best = x;
+                best_poor = s.poor;
+                best_nearest = s.nearest;
+            }
+        }
+    }
+    return best;
+}
+
+}  // namespace
+
 Point StarPlacement::place(const PoorTriangle& t, PlacementScratch& scratch) const {
     static const OffCentrePlacement off_centre;
     const Point off = off_centre.place(t, scratch);
@@ -113,39 +177,8 @@ Point StarPlacement::place(const PoorTriangle& t, PlacementScratch& scratch) con
     const double bottom = 0.5 * l * tan_bound;
     if (!(top > bottom)) return off;
 
-    // Rows from the off-centre's height down towards pq; in each, the
-    // bisector first, then either side out to where the angles at p and q
-    // would fall under θ.  The first point whose star meets the goal wins;
-    // else the best by the Move rule, the off-centre unless one beats it.
-    Point best = off;
-    int best_poor = off_usable ? at_off.poor : std::numeric_limits<int>::max();
-    double best_nearest = off_usable ? at_off.nearest : 0;
-    for (int i = 0; i <= rows; ++i) {
-        const double h = top - (top - bottom) * (i == 0 ? first_row : double(i) / (rows + 1));
-        const double half_width = std::max(0.0, h / tan_bound - 0.5 * l);
-        for (int j = 0; j <= 2 * sides; ++j) {
-            if (i == 0 && j == 0) continue;  // the off-centre itself
-            const int side = (j + 1) / 2 * (j % 2 == 1 ? 1 : -1);
-            const double a = half_width * side / (sides + 1);
-            const Point x{m.x + h * nx + a * ux, m.y + h * ny + a * uy};
-            if (!admissible_point(t, x)) continue;
-            const StarQuality s = star_quality(t, x, goal, scratch);
-            if (!s.located || s.encroaches) continue;
-            if (s.poor == 0) return x;
-            // Else, no worse than the off-centre's star in its smallest angle:
-            // fewer poor triangles, or as few and farther from its vertices.
-            if (move_ == Move::to_good_star || s.smallest_sine < at_off.smallest_sine) continue;
-            const bool fewer = s.poor < best_poor;
-            const bool farther =
-                move_ == Move::to_farther && s.poor == best_poor && s.nearest > best_nearest;
-            if (fewer || farther) {
-                best = x;
-                best_poor = s.poor;
-                best_nearest = s.nearest;
-            }
-        }
-    }
-    return best;
+    const Grid grid{m, ux, uy, nx, ny, top, bottom, tan_bound, l};
+    return best_on_grid(t, grid, off, at_off, off_usable, goal, move_, scratch);
 }
 
 const char* StarPlacement::name() const {

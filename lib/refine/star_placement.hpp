@@ -75,11 +75,6 @@ public:
     const char* name() const override;
 
 private:
-    // The grid: rows + 1 rows, the first at first_row of the way from the
-    // off-centre's height to the lowest, each with 2 sides + 1 points.
-    static constexpr int rows = 8;
-    static constexpr int sides = 3;
-    static constexpr double first_row = 0.02;
     Move move_;
 };
 

@@ -53,9 +53,13 @@ public:
             threshold_[k - 1] = lo;
         }
     }
+    // The thresholds fall, so the cosine is at or below a prefix of them:
+    // counting them all gives that prefix's length without a branch per
+    // threshold (a loop that stopped at the first one above the cosine
+    // mispredicted about once an angle).
     std::size_t bin(double cosine) const {
         std::size_t b = 0;
-        while (b < 17 && cosine <= threshold_[b]) ++b;
+        for (const double t : threshold_) b += cosine <= t ? 1 : 0;
         return b;
     }
 
@@ -114,8 +118,11 @@ struct Tally {
         min_altitude = std::min(min_altitude, altitude);
         const double ratio = std::sqrt(longest2) / altitude;
         max_ratio = std::max(max_ratio, ratio);
+        // The bounds rise: the ratio's bin is the number of bounds below it
+        // (the last bin takes everything above), counted without branches.
         std::size_t bin = 0;
-        while (bin + 1 < ratio_bounds.size() && ratio > ratio_bounds[bin]) ++bin;
+        for (std::size_t i = 0; i + 1 < ratio_bounds.size(); ++i)
+            bin += ratio > ratio_bounds[i] ? 1 : 0;
         ++ratio_histogram[bin];
         const AngleBins& bins = angle_bins();
         for (std::size_t k = 0; k < 3; ++k) {

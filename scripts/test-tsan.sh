@@ -2,7 +2,7 @@
 # Builds gpdr's parallel tests and the gpdr program with ThreadSanitizer
 # (build-tsan) and runs them: the parallel tests, then gpdr -j4 refining a
 # sample, taking its -V statistics and writing every output file side by
-# side, and refining a sample with vertex attributes (on four threads and on two: the same
+# side, triangulating 220,000 points in bands, and refining a sample with vertex attributes (on four threads and on two: the same
 # files), then eight threads calling libtriangle's triangulate() at once.  Any race report fails the run.  GCC 12 gives false warnings in
 # Catch2's headers under sanitizers, so -Werror is off here.
 set -eu
@@ -39,6 +39,17 @@ done
 echo "gpdr -j4 and -j2 under ThreadSanitizer: no race reported"
 for f in node ele poly; do cmp "$scratch/j2/letter.1.$f" "$scratch/j4/letter.1.$f"; done
 echo "gpdr -j2 and -j4 under ThreadSanitizer: the same files"
+# A point set large enough to be triangulated in bands on several threads
+# (triangulate/strip_inserter.hpp), on four threads and on two: the same files.
+awk 'BEGIN { srand(5); n = 220000; print n, 2, 0, 0;
+  for (i = 1; i <= n; i++) printf "%d %.17g %.17g\n", i, rand(), rand() }' >"$scratch/points.node"
+for threads in 4 2; do
+    mkdir "$scratch/p$threads"
+    cp "$scratch/points.node" "$scratch/p$threads/"
+    (cd "$scratch/p$threads" && run "$build/gpdr" -Qj$threads points.node)
+done
+cmp "$scratch/p2/points.1.ele" "$scratch/p4/points.1.ele"
+echo "gpdr's Delaunay in bands on -j4 and -j2 under ThreadSanitizer: no race, the same files"
 # On a terminal: the progress line's thread reads the refining mesh's vertex
 # count and the files written, while four threads refine and then write
 # the files for other programs side by side (what the terminal shows is

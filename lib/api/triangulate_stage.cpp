@@ -13,6 +13,7 @@
 #include "api/job_stages.hpp"
 #include "mesh/pool.hpp"
 #include "mesh/traverse.hpp"
+#include "parallel/schedule.hpp"
 #include "triangulate/conforming.hpp"
 #include "triangulate/constrained.hpp"
 #include "triangulate/delaunay.hpp"
@@ -86,7 +87,9 @@ void triangulate_points(const Options& options, Input& in, Triangulated& out,
                         const WarningSink& warn) {
     triangulate::DelaunayReport report;
     try {
-        out.mesh = triangulate::delaunay(take_points(in.nodes.data), report);
+        triangulate::DelaunayOptions delaunay_options;
+        delaunay_options.threads = parallel::thread_count(options.threads);
+        out.mesh = triangulate::delaunay(take_points(in.nodes.data), report, delaunay_options);
     } catch (const GeometryError& e) {
         throw InputError(in.node_file, 0, e.what());
     }

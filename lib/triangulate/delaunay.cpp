@@ -6,8 +6,10 @@
 #include "triangulate/delaunay.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <string>
+#include <thread>
 #include <unordered_map>
 
 #include <gpdr/errors.hpp>
@@ -18,6 +20,7 @@
 #include "mesh/pool.hpp"
 #include "triangulate/point_inserter.hpp"
 #include "triangulate/spatial_sort.hpp"
+#include "triangulate/strip_inserter.hpp"
 
 namespace gpdr::triangulate {
 
@@ -125,36 +128,168 @@ using KeptBy = std::unordered_map<std::uint32_t, std::uint32_t>;
 // Inserts every vertex (vertex id = position in `order`) after the first
 // triangle (0, ib, ic).  Of two equal points the lower input index stays in
 // the triangulation; the other is recorded in the result.
-KeptBy insert_vertices(Pool& pool, const std::vector<std::uint32_t>& order, std::size_t ib,
-                       std::size_t ic) {
-    Mesh& mesh = pool.mesh();
-    KeptBy kept_by;
+// Inserts vertex v (its position in `order`), located by a walk from
+// `hint`, or records it as the duplicate of the vertex at its point: of two
+// equal points the lower input index stays in the triangulation.  Returns a
+// triangle at v, the next walk's start.
+TriangleId insert_one(PointInserter& inserter, const std::vector<std::uint32_t>& order, VertexId v,
+                      TriangleId hint, std::uint32_t& random_state, KeptBy& kept_by) {
+    Mesh& mesh = inserter.mesh();
+    const LocateResult where = locate(mesh, mesh.point(v), hint, random_state);
+    if (where.where != Location::on_vertex) return inserter.insert(v, where.triangle);
+    const VertexId there = mesh.triangle(where.triangle).v[where.index];
+    const std::uint32_t i = index(v);
+    if (order[i] < order[index(there)]) {
+        rename_vertex(mesh, where.triangle, there, v);
+        kept_by[order[index(there)]] = order[i];
+    } else {
+        kept_by[order[i]] = order[index(there)];
+    }
+    return where.triangle;
+}
+
+// The first triangle (0, ib, ic), counter-clockwise, and its ghosts.
+TriangleId start_triangle(Pool& pool, std::size_t ib, std::size_t ic) {
+    const Mesh& mesh = pool.mesh();
     VertexId a{0}, b{static_cast<std::uint32_t>(ib)}, c{static_cast<std::uint32_t>(ic)};
     if (geometry::orient2d(mesh.point(a), mesh.point(b), mesh.point(c)) < 0) std::swap(b, c);
-    TriangleId hint = start(pool, a, b, c);
+    return start(pool, a, b, c);
+}
 
+// Inserts every vertex (vertex id = position in `order`) after the first
+// triangle (0, ib, ic).  Of two equal points the lower input index stays in
+// the triangulation; the other is recorded in the result.
+KeptBy insert_vertices(Pool& pool, const std::vector<std::uint32_t>& order, std::size_t ib,
+                       std::size_t ic) {
+    KeptBy kept_by;
+    TriangleId hint = start_triangle(pool, ib, ic);
     PointInserter inserter(pool);
     std::uint32_t random_state = InsertBuffer{}.random_state;  // the general code's walk, exactly
     const std::size_t n = order.size();
     for (std::size_t i = 1; i < n; ++i) {
         if (i == ib || i == ic) continue;
-        const VertexId v{static_cast<std::uint32_t>(i)};
-        const LocateResult where = locate(mesh, mesh.point(v), hint, random_state);
-        if (where.where == Location::on_vertex) {
-            // Keep the lower input index in the triangulation.
-            const VertexId there = mesh.triangle(where.triangle).v[where.index];
-            if (order[i] < order[index(there)]) {
-                rename_vertex(mesh, where.triangle, there, v);
-                kept_by[order[index(there)]] = order[i];
-            } else {
-                kept_by[order[i]] = order[index(there)];
-            }
-            hint = where.triangle;
-            continue;
-        }
-        hint = inserter.insert(v, where.triangle);
+        hint = insert_one(inserter, order, VertexId{static_cast<std::uint32_t>(i)}, hint,
+                          random_state, kept_by);
     }
     return kept_by;
+}
+
+// The x values that cut the points after the first `prefix` into `bands`
+// bands of about equal counts (from a sample of every 64th), ascending and
+// distinct.
+std::vector<double> band_cuts(const Mesh& mesh, std::size_t prefix, std::size_t n,
+                              std::uint32_t bands) {
+    std::vector<double> xs;
+    for (std::size_t i = prefix; i < n; i += 64)
+        xs.push_back(mesh.point(VertexId{static_cast<std::uint32_t>(i)}).x);
+    std::sort(xs.begin(), xs.end());
+    std::vector<double> cuts;
+    for (std::uint32_t k = 1; k < bands && !xs.empty(); ++k) {
+        const double x = xs[xs.size() * k / bands];
+        if (cuts.empty() || cuts.back() < x) cuts.push_back(x);
+    }
+    return cuts;
+}
+
+// Whether every edge between two real triangles is strictly locally
+// Delaunay (the fourth point strictly outside the circle): then the
+// triangulation is the only Delaunay one.  Exact; on `threads` threads.
+bool strictly_delaunay(const Mesh& mesh, unsigned threads) {
+    const std::uint32_t end = mesh.triangle_end();
+    std::atomic<bool> strict{true};
+    std::atomic<std::uint32_t> next{0};
+    constexpr std::uint32_t run = 1u << 16;
+    const auto work = [&] {
+        // The neighbours and their far corners lie anywhere in memory: ask
+        // for them ahead (the neighbours' records `ahead` triangles early,
+        // the far corners half as early, once the records have arrived).
+        constexpr std::uint32_t ahead = 16;
+        const auto ask_neighbours = [&](std::uint32_t i) {
+            const Triangle& t = mesh.triangle(TriangleId{i});
+            for (const EdgeRef e : t.n) __builtin_prefetch(&mesh.triangle(e.triangle()));
+        };
+        const auto ask_far = [&](std::uint32_t i) {
+            const Triangle& t = mesh.triangle(TriangleId{i});
+            if (!t.live()) return;
+            for (const EdgeRef e : t.n) {
+                const VertexId far = mesh.triangle(e.triangle()).v[e.edge()];
+                if (far != ghost_vertex) __builtin_prefetch(&mesh.point(far));
+            }
+        };
+        for (std::uint32_t first; (first = next.fetch_add(run)) < end && strict.load();) {
+            const std::uint32_t last = std::min(end, first + run);
+            for (std::uint32_t i = first; i < last; ++i) {
+                if (i + ahead < last) ask_neighbours(i + ahead);
+                if (i + ahead / 2 < last) ask_far(i + ahead / 2);
+                const Triangle& t = mesh.triangle(TriangleId{i});
+                if (!t.live() || t.is_ghost()) continue;
+                for (int k = 0; k < 3; ++k) {
+                    const EdgeRef across = t.n[k];
+                    if (index(across.triangle()) < i) continue;  // each edge once
+                    const Triangle& u = mesh.triangle(across.triangle());
+                    if (u.is_ghost()) continue;
+                    const VertexId far = u.v[across.edge()];
+                    if (geometry::incircle(mesh.point(t.v[0]), mesh.point(t.v[1]),
+                                           mesh.point(t.v[2]), mesh.point(far)) >= 0) {
+                        strict.store(false);
+                        return;
+                    }
+                }
+            }
+        }
+    };
+    {
+        std::vector<std::jthread> helpers;
+        for (unsigned h = 1; h < threads; ++h) helpers.emplace_back(work);
+        work();
+    }
+    return strict.load();
+}
+
+// insert_vertices on several threads: the first points (a thirty-second)
+// one at a time, then rounds that double the points inserted, each round
+// in bands (strip_inserter.hpp) and then the points the bands put off, one
+// at a time in order.  False when the result is not the only Delaunay
+// triangulation of the points (the caller starts again on one thread).
+bool insert_vertices_in_bands(Mesh& mesh, const std::vector<std::uint32_t>& order, std::size_t ib,
+                              std::size_t ic, unsigned threads, KeptBy& kept_by) {
+    constexpr std::uint32_t bands = 16;  // fixed: the mesh must not depend on `threads`
+    const std::size_t n = order.size();
+    const std::size_t prefix = std::max({n / 32, ib + 1, ic + 1});
+    std::uint32_t random_state = InsertBuffer{}.random_state;
+    TriangleId hint;
+    {
+        Pool pool(mesh);
+        hint = start_triangle(pool, ib, ic);
+        PointInserter inserter(pool);
+        for (std::size_t i = 1; i < prefix; ++i) {
+            if (i == ib || i == ic) continue;
+            hint = insert_one(inserter, order, VertexId{static_cast<std::uint32_t>(i)}, hint,
+                              random_state, kept_by);
+        }
+    }
+    std::vector<std::uint32_t> skip{static_cast<std::uint32_t>(std::min(ib, ic)),
+                                    static_cast<std::uint32_t>(std::max(ib, ic))};
+    {
+        double y_low = mesh.point(VertexId{0}).y, y_high = y_low;
+        for (std::size_t i = 0; i < n; ++i) {
+            const double y = mesh.point(VertexId{static_cast<std::uint32_t>(i)}).y;
+            y_low = std::min(y_low, y);
+            y_high = std::max(y_high, y);
+        }
+        StripInserter in_bands(mesh, band_cuts(mesh, prefix, n, bands), y_low, y_high, threads);
+        for (std::size_t first = prefix; first < n;) {
+            const std::size_t last = std::min(n, 2 * first);
+            const std::vector<std::uint32_t> deferred = in_bands.insert_round(
+                static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(last), skip, hint);
+            hint = in_bands.live_triangle(hint);
+            PointInserter inserter(in_bands.pool());
+            for (const std::uint32_t v : deferred)
+                hint = insert_one(inserter, order, VertexId{v}, hint, random_state, kept_by);
+            first = last;
+        }
+    }
+    return strictly_delaunay(mesh, threads);
 }
 
 // From insertion order back to input numbering; the duplicates become
@@ -188,7 +323,8 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> duplicate_pairs(const KeptB
 
 }  // namespace
 
-mesh::Mesh delaunay(std::span<const Point> points, DelaunayReport& report) {
+mesh::Mesh delaunay(std::span<const Point> points, DelaunayReport& report,
+                    const DelaunayOptions& options) {
     report.duplicates.clear();
     check_points(points);
     const std::vector<std::uint32_t> order = brio_order(points);
@@ -211,9 +347,14 @@ mesh::Mesh delaunay(std::span<const Point> points, DelaunayReport& report) {
         mesh.set_kind(v, VertexKind::input);
     }
     KeptBy kept_by;
+    if (options.threads >= 2 && n >= options.parallel_from) {
+        if (!insert_vertices_in_bands(mesh, order, ib, ic, options.threads, kept_by))
+            return delaunay(points, report, DelaunayOptions{.threads = 1});
+    }
     {
         Pool pool(mesh);
-        kept_by = insert_vertices(pool, order, ib, ic);
+        if (options.threads < 2 || n < options.parallel_from)
+            kept_by = insert_vertices(pool, order, ib, ic);
         remove_ghosts(pool);
         renumber_to_input(mesh, points, order, kept_by);
     }

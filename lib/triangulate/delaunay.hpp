@@ -34,8 +34,20 @@ struct DelaunayReport {
     std::vector<std::pair<std::uint32_t, std::uint32_t>> duplicates;
 };
 
+// With threads >= 2 and at least parallel_from points, most points are
+// inserted in bands on several threads (strip_inserter.hpp).  The mesh then
+// has the same triangles as with one thread, numbered otherwise, and the
+// same for every thread count: where the Delaunay triangulation is not
+// unique (four or more points on an empty circle), the points are
+// triangulated again on one thread.
+struct DelaunayOptions {
+    unsigned threads = 1;
+    std::size_t parallel_from = 200'000;
+};
+
 // Throws gpdr::GeometryError when the points have fewer than three distinct
 // positions, are all collinear, or a coordinate is not finite.
-mesh::Mesh delaunay(std::span<const geometry::Point> points, DelaunayReport& report);
+mesh::Mesh delaunay(std::span<const geometry::Point> points, DelaunayReport& report,
+                    const DelaunayOptions& options = {});
 
 }  // namespace gpdr::triangulate

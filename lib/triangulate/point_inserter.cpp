@@ -55,7 +55,8 @@ PointInserter::PointInserter(Pool& pool) : pool_(pool), mesh_(pool.mesh()) {}
 // exactly the boundary, and the first one recorded is the one the general
 // boundary walk starts from: the first boundary edge of the first cavity
 // triangle that has one.)
-void PointInserter::search(const Point& p, TriangleId seed) {
+template <bool Banded>
+bool PointInserter::search(const Point& p, TriangleId seed) {
     cavity_.clear();
     boundary_.clear();
     Triangle& s = mesh_.triangle(seed);
@@ -69,6 +70,10 @@ void PointInserter::search(const Point& p, TriangleId seed) {
             Triangle& u = mesh_.triangle(across.triangle());
             if (u.marked()) continue;
             if (in_circumcircle(mesh_, u, p)) {
+                if (Banded && !owns(u)) {
+                    unmark_cavity();
+                    return false;
+                }
                 u.flags |= Triangle::mark_bit;
                 cavity_.push_back(across.triangle());
                 // Its other neighbours are tested when the queue reaches it:
@@ -78,9 +83,19 @@ void PointInserter::search(const Point& p, TriangleId seed) {
                 prefetch(mesh_, u.n[prev3(across.edge())]);
                 continue;
             }
+            if (Banded && !owns(u)) {
+                unmark_cavity();
+                return false;
+            }
             boundary_.push_back({t.v[next3(k)], t.v[prev3(k)], across});
         }
     }
+    return true;
+}
+
+void PointInserter::unmark_cavity() {
+    for (const TriangleId t : cavity_)
+        mesh_.triangle(t).flags &= static_cast<std::uint8_t>(~Triangle::mark_bit);
 }
 
 // ring_: the boundary edges head to tail, counter-clockwise round the cavity
@@ -119,8 +134,7 @@ void PointInserter::chain() {
 }
 
 void PointInserter::not_a_disk() {
-    for (const TriangleId t : cavity_)
-        mesh_.triangle(t).flags &= static_cast<std::uint8_t>(~Triangle::mark_bit);
+    unmark_cavity();
     throw InternalError(
         "mesh: Bowyer-Watson cavity is not simply connected (the mesh is not Delaunay near the "
         "point)");
@@ -153,7 +167,13 @@ TriangleId PointInserter::fan(VertexId v) {
 }
 
 TriangleId PointInserter::insert(VertexId v, TriangleId seed) {
-    search(mesh_.point(v), seed);
+    search<false>(mesh_.point(v), seed);
+    chain();
+    return fan(v);
+}
+
+TriangleId PointInserter::try_insert(VertexId v, TriangleId seed) {
+    if (!search<true>(mesh_.point(v), seed)) return no_triangle;
     chain();
     return fan(v);
 }

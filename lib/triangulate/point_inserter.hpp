@@ -32,6 +32,28 @@ public:
     // fan (the one a general insertion lists first in InsertBuffer::created).
     mesh::TriangleId insert(mesh::VertexId v, mesh::TriangleId seed);
 
+    mesh::Mesh& mesh() const { return mesh_; }
+
+    // Confines try_insert to the triangles of the band lo < x < hi
+    // (strip_inserter.hpp): those whose three corners lie strictly inside it
+    // (never a ghost).
+    void limit_to(double lo, double hi) {
+        lo_ = lo;
+        hi_ = hi;
+    }
+    bool owns(const mesh::Triangle& t) const {
+        for (const mesh::VertexId v : t.v) {
+            if (v == mesh::ghost_vertex) return false;
+            const double x = mesh_.point(v).x;
+            if (!(lo_ < x && x < hi_)) return false;
+        }
+        return true;
+    }
+    // insert(), unless the cavity holds a triangle the band does not own or
+    // borders one (whose link to the cavity would be rewritten): then
+    // nothing changes and the answer is no_triangle.  `seed` must be owned.
+    mesh::TriangleId try_insert(mesh::VertexId v, mesh::TriangleId seed);
+
 private:
     // A cavity boundary edge, seen from inside: from -> to, and the edge of
     // the triangle outside that faces it.
@@ -40,7 +62,11 @@ private:
         mesh::EdgeRef outer;
     };
 
-    void search(const geometry::Point& p, mesh::TriangleId seed);
+    // Grows the cavity; with Banded, false (and no mark left) when it meets
+    // a triangle the band does not own.
+    template <bool Banded>
+    bool search(const geometry::Point& p, mesh::TriangleId seed);
+    void unmark_cavity();
     void chain();
     mesh::TriangleId fan(mesh::VertexId v);
     [[noreturn]] void not_a_disk();
@@ -52,6 +78,7 @@ private:
     std::vector<std::uint32_t> ring_;       // boundary_ indices, counter-clockwise
     // (first vertex, index in boundary_), sorted: for chaining a large cavity.
     std::vector<std::pair<mesh::VertexId, std::uint32_t>> by_from_;
+    double lo_ = 0, hi_ = 0;  // the band of try_insert
 };
 
 }  // namespace gpdr::triangulate

@@ -1,0 +1,227 @@
+// Point insertion in bands, several at once (see strip_inserter.hpp).
+
+#include "triangulate/strip_inserter.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <limits>
+#include <thread>
+
+#include "geometry/predicates.hpp"
+#include "mesh/locate.hpp"
+#include "triangulate/point_inserter.hpp"
+
+namespace gpdr::triangulate {
+
+using namespace gpdr::mesh;
+using geometry::Point;
+
+namespace {
+
+// A walk from `from` (owned by the band of `inserter`) to the triangle that
+// holds p, stepping only into owned triangles: each step reads a neighbour
+// of an owned triangle, which no other band writes.  no_triangle when the
+// way leaves the band, or when p is a corner already (a duplicate: the
+// caller's one-thread pass decides which copy stays).  The edge tried first
+// turns with every step, so that the walk cannot circle.
+TriangleId walk_in_band(const Mesh& mesh, const PointInserter& inserter, TriangleId from,
+                        const Point& p) {
+    TriangleId t = from;
+    for (std::uint32_t step = 0;; ++step) {
+        const Triangle& r = mesh.triangle(t);
+        const Point* corner[3] = {&mesh.point(r.v[0]), &mesh.point(r.v[1]), &mesh.point(r.v[2])};
+        bool moved = false;
+        for (int j = 0; j < 3 && !moved; ++j) {
+            const int k = static_cast<int>((step + static_cast<std::uint32_t>(j)) % 3);
+            if (geometry::orient2d(*corner[next3(k)], *corner[prev3(k)], p) >= 0) continue;
+            const TriangleId across = r.n[k].triangle();
+            if (!inserter.owns(mesh.triangle(across))) return no_triangle;
+            t = across;
+            moved = true;
+        }
+        if (moved) continue;
+        for (const Point* c : corner)
+            if (*c == p) return no_triangle;
+        return t;
+    }
+}
+
+}  // namespace
+
+struct StripInserter::Band {
+    std::vector<std::uint32_t> points;    // this round's, in order
+    std::vector<std::uint32_t> deferred;  // in order
+    TriangleId start = no_triangle;
+    std::uint64_t inserted = 0;
+    std::exception_ptr failure;
+};
+
+StripInserter::StripInserter(Mesh& mesh, std::vector<double> cuts, double y_low, double y_high,
+                             unsigned threads)
+    : mesh_(mesh),
+      cuts_(std::move(cuts)),
+      threads_(std::max(1u, threads)),
+      last_(cuts_.size() + 1, no_triangle),
+      y_low_(y_low),
+      y_scale_(y_high > y_low ? cells / (y_high - y_low) : 0),
+      anchors_((cuts_.size() + 1) * cells, no_triangle) {}
+
+std::uint32_t StripInserter::cell(double y) const {
+    const double c = (y - y_low_) * y_scale_;
+    return c <= 0 ? 0 : c >= cells - 1 ? cells - 1 : static_cast<std::uint32_t>(c);
+}
+
+StripInserter::~StripInserter() {
+    // In band order: each pool hands its spare slots back to the mesh as
+    // it goes, and the next pool made takes them in that order.
+    for (auto& pool : pools_) pool.reset();
+}
+
+std::vector<std::uint32_t> StripInserter::insert_round(std::uint32_t first, std::uint32_t last,
+                                                       std::span<const std::uint32_t> skip,
+                                                       TriangleId hint) {
+    const auto bands = static_cast<std::uint32_t>(cuts_.size() + 1);
+    Lane lane = Lane::first(mesh_, bands);
+    for (std::uint32_t s = 0; s < bands; ++s) {
+        lane.index = s;
+        if (pools_.size() < bands)
+            pools_.push_back(std::make_unique<Pool>(mesh_, lane));
+        else
+            pools_[s]->move_to_lane(lane);
+    }
+
+    // Each point to its band; a point on a cut belongs to none.
+    std::vector<Band> band(bands);
+    std::vector<std::uint32_t> on_cuts;
+    for (std::uint32_t v = first; v < last; ++v) {
+        if (std::binary_search(skip.begin(), skip.end(), v)) continue;
+        const double x = mesh_.point(VertexId{v}).x;
+        const auto s = static_cast<std::uint32_t>(
+            std::upper_bound(cuts_.begin(), cuts_.end(), x) - cuts_.begin());
+        if (s > 0 && cuts_[s - 1] == x)
+            on_cuts.push_back(v);
+        else
+            band[s].points.push_back(v);
+    }
+
+    // Where each band starts: its last triangle if that is still its own,
+    // else the triangle that holds its first point, found by the ordinary
+    // walk (one thread, nothing moves yet), if the band owns it.
+    std::uint32_t random_state = 1;
+    for (std::uint32_t s = 0; s < bands; ++s) {
+        if (band[s].points.empty()) continue;
+        PointInserter probe(*pools_[s]);
+        probe.limit_to(s == 0 ? -std::numeric_limits<double>::infinity() : cuts_[s - 1],
+                       s + 1 == bands ? std::numeric_limits<double>::infinity() : cuts_[s]);
+        // Anchors the band no longer owns (the one-thread pass may have
+        // reused their slots anywhere) are dropped: during the round a band
+        // reads only what it owned when the round began, and its own.
+        for (std::uint32_t c = 0; c < cells; ++c) {
+            TriangleId& a = anchors_[s * cells + c];
+            if (a != no_triangle && !(mesh_.triangle(a).live() && probe.owns(mesh_.triangle(a))))
+                a = no_triangle;
+        }
+        const TriangleId mine = last_[s];
+        if (mine != no_triangle && mesh_.triangle(mine).live() && probe.owns(mesh_.triangle(mine))) {
+            band[s].start = mine;
+            continue;
+        }
+        last_[s] = no_triangle;
+        // (Its first points may lie near a cut: try a few.)
+        constexpr std::size_t tries = 64;
+        for (std::size_t i = 0; i < std::min(tries, band[s].points.size()); ++i) {
+            const Point& p = mesh_.point(VertexId{band[s].points[i]});
+            const LocateResult where = locate(mesh_, p, hint, random_state);
+            if (where.where != Location::on_vertex && probe.owns(mesh_.triangle(where.triangle))) {
+                band[s].start = where.triangle;
+                break;
+            }
+        }
+    }
+
+    std::atomic<std::uint32_t> next{0};
+    const auto work = [&] {
+        for (std::uint32_t s; (s = next.fetch_add(1)) < bands;) {
+            try {
+                run_band(band[s], s);
+            } catch (...) {
+                band[s].failure = std::current_exception();
+            }
+        }
+    };
+    {
+        std::vector<std::jthread> helpers;
+        for (unsigned h = 1; h < std::min(threads_, bands); ++h) helpers.emplace_back(work);
+        work();
+    }
+
+    std::vector<std::uint32_t> deferred = std::move(on_cuts);
+    for (Band& b : band) {
+        if (b.failure) std::rethrow_exception(b.failure);
+        inserted_ += b.inserted;
+        deferred.insert(deferred.end(), b.deferred.begin(), b.deferred.end());
+    }
+    // In an order for short walks: they gather along the cuts, so cut by
+    // cut (the nearest one), up each cut.  Any order makes the same
+    // triangulation; this one is fixed by the points alone.
+    const auto nearest_cut = [&](double x) {
+        const auto above = std::upper_bound(cuts_.begin(), cuts_.end(), x) - cuts_.begin();
+        if (above == 0) return std::ptrdiff_t{0};
+        if (above == static_cast<std::ptrdiff_t>(cuts_.size())) return above - 1;
+        return x - cuts_[above - 1] < cuts_[above] - x ? above - 1 : above;
+    };
+    std::vector<std::pair<std::ptrdiff_t, std::uint32_t>> keyed;
+    keyed.reserve(deferred.size());
+    for (const std::uint32_t v : deferred) keyed.push_back({nearest_cut(mesh_.point(VertexId{v}).x), v});
+    std::sort(keyed.begin(), keyed.end(), [&](const auto& a, const auto& b) {
+        if (a.first != b.first) return a.first < b.first;
+        const double ya = mesh_.point(VertexId{a.second}).y, yb = mesh_.point(VertexId{b.second}).y;
+        return ya < yb || (ya == yb && a.second < b.second);
+    });
+    for (std::size_t i = 0; i < keyed.size(); ++i) deferred[i] = keyed[i].second;
+    return deferred;
+}
+
+TriangleId StripInserter::live_triangle(TriangleId hint) const {
+    if (mesh_.triangle(hint).live()) return hint;
+    for (const TriangleId t : last_)
+        if (t != no_triangle && mesh_.triangle(t).live()) return t;
+    for (std::uint32_t i = 0;; ++i)
+        if (mesh_.triangle(TriangleId{i}).live()) return TriangleId{i};
+}
+
+void StripInserter::run_band(Band& band, std::uint32_t s) {
+    const auto bands = static_cast<std::uint32_t>(cuts_.size() + 1);
+    PointInserter inserter(*pools_[s]);
+    inserter.limit_to(s == 0 ? -std::numeric_limits<double>::infinity() : cuts_[s - 1],
+                      s + 1 == bands ? std::numeric_limits<double>::infinity() : cuts_[s]);
+    TriangleId at = band.start;
+    TriangleId* anchors = &anchors_[s * cells];
+    for (const std::uint32_t v : band.points) {
+        const VertexId id{v};
+        const Point& p = mesh_.point(id);
+        TriangleId& anchor = anchors[cell(p.y)];
+        // The anchor's slot is this band's (made by it this round, or owned
+        // when the round began): if it died, only this band reused it.
+        TriangleId from = at;
+        if (anchor != no_triangle && mesh_.triangle(anchor).live() &&
+            inserter.owns(mesh_.triangle(anchor)))
+            from = anchor;
+        TriangleId made = no_triangle;
+        if (from != no_triangle) {
+            const TriangleId seed = walk_in_band(mesh_, inserter, from, p);
+            if (seed != no_triangle) made = inserter.try_insert(id, seed);
+        }
+        if (made == no_triangle) {
+            band.deferred.push_back(v);
+            continue;
+        }
+        at = made;
+        anchor = made;
+        ++band.inserted;
+    }
+    last_[s] = at;
+}
+
+}  // namespace gpdr::triangulate

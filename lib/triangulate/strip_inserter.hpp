@@ -1,0 +1,88 @@
+#pragma once
+// Point insertion on several threads at once, for delaunay.cpp's -jN path.
+//
+// The plane is cut into vertical bands (strips) at fixed x values; a band
+// OWNS a triangle whose three corners lie strictly inside it.  In a round,
+// each band inserts its own points, in their order, into its own
+// triangles, and any point whose walk, cavity or cavity border would touch
+// a triangle the band does not own is put off (deferred) with nothing
+// changed.  The bands then never get in each other's way:
+//
+//   - a band writes only triangles it owns (the cavity, and the neighbours
+//     across the cavity's border, whose links change), and the triangles
+//     it creates are its own (their corners are the new point and corners
+//     of the cavity);
+//   - it reads only its own triangles and their neighbours, and a
+//     neighbour of a triangle of band s shares two corners with it, inside
+//     band s, so no other band can own it: nobody writes it this round.
+//
+// So each band's work depends on its own points and the triangles it
+// owns, never on the other bands' timing, and each band claims its slots
+// from its own lane pool (mesh/pool.hpp: ids by a fixed rule): the mesh
+// after a round is the same for any number of threads and any schedule.
+// The deferred points are inserted one at a time after the round, in
+// order, by the caller.
+//
+// Bowyer-Watson insertion of a point makes the Delaunay triangulation of
+// the points inserted so far whatever their order, so the parallel rounds
+// make the one sequential insertion makes wherever that triangulation is
+// unique (delaunay.cpp checks that it is, and otherwise starts again on
+// one thread).
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "mesh/mesh.hpp"
+#include "mesh/pool.hpp"
+
+namespace gpdr::triangulate {
+
+class StripInserter {
+public:
+    // `cuts`: the x values between the bands, ascending (bands - 1 of them);
+    // the points' y lie in [y_low, y_high].
+    StripInserter(mesh::Mesh& mesh, std::vector<double> cuts, double y_low, double y_high,
+                  unsigned threads);
+    ~StripInserter();
+    StripInserter(const StripInserter&) = delete;
+    StripInserter& operator=(const StripInserter&) = delete;
+
+    // Inserts vertices first..last-1 (those in `skip`, ascending, are not
+    // inserted or returned), each band's on one thread; returns the ones
+    // put off, cut by cut and up each cut (short walks for the caller).
+    // one thread (the pools are idle then).
+    std::vector<std::uint32_t> insert_round(std::uint32_t first, std::uint32_t last,
+                                            std::span<const std::uint32_t> skip,
+                                            mesh::TriangleId hint);
+
+    // The first band's pool, for the deferred points between rounds.
+    mesh::Pool& pool() { return *pools_.front(); }
+
+    // `hint` if it is alive, else a live triangle (a band's last one).
+    mesh::TriangleId live_triangle(mesh::TriangleId hint) const;
+
+    std::uint64_t inserted() const { return inserted_; }
+
+private:
+    struct Band;
+    void run_band(Band& band, std::uint32_t s);
+
+    mesh::Mesh& mesh_;
+    std::vector<double> cuts_;
+    unsigned threads_;
+    std::vector<std::unique_ptr<mesh::Pool>> pools_;
+    std::vector<mesh::TriangleId> last_;  // each band's last triangle made
+    // Where a band's walks start: per band, a triangle it made last in each
+    // of `cells` slices of y.  A band's points come in curve order, which
+    // leaves a band and enters it again elsewhere, often along a cut, where
+    // a walk from the last point would run out of the band.
+    static constexpr std::uint32_t cells = 64;
+    double y_low_, y_scale_;
+    std::vector<mesh::TriangleId> anchors_;
+    std::uint32_t cell(double y) const;
+    std::uint64_t inserted_ = 0;
+};
+
+}  // namespace gpdr::triangulate

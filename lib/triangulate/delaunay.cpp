@@ -9,7 +9,6 @@
 #include <atomic>
 #include <cmath>
 #include <string>
-#include <thread>
 #include <unordered_map>
 
 #include <gpdr/errors.hpp>
@@ -18,6 +17,7 @@
 #include "mesh/insert.hpp"
 #include "mesh/locate.hpp"
 #include "mesh/pool.hpp"
+#include "mesh/slices.hpp"
 #include "triangulate/point_inserter.hpp"
 #include "triangulate/spatial_sort.hpp"
 #include "triangulate/strip_inserter.hpp"
@@ -71,16 +71,31 @@ void rename_vertex(Mesh& mesh, TriangleId t, VertexId from, VertexId to) {
     } while (t != first);
 }
 
-void remove_ghosts(Pool& pool) {
+// Runs of triangle or vertex ids that threads take in turn.
+constexpr std::uint32_t id_run = 1u << 16;
+std::size_t id_runs(std::size_t end) { return (end + id_run - 1) / id_run; }
+
+// Destroys the ghosts in ascending order (found on `threads` threads: they
+// are a few among millions).
+void remove_ghosts(Pool& pool, unsigned threads) {
     Mesh& mesh = pool.mesh();
     const std::uint32_t end = mesh.triangle_end();
-    for (std::uint32_t i = 0; i < end; ++i) {
-        const TriangleId id{i};
-        const Triangle& r = mesh.triangle(id);
-        if (!r.live() || !r.is_ghost()) continue;
-        const EdgeRef real = r.n[r.corner_of(ghost_vertex)];
-        mesh.triangle(real.triangle()).n[real.edge()] = EdgeRef::none();
-        pool.destroy(id);
+    std::vector<std::vector<std::uint32_t>> ghosts(id_runs(end));
+    run_pieces(threads, ghosts.size(), [&](std::size_t piece) {
+        const auto first = static_cast<std::uint32_t>(piece * id_run);
+        for (std::uint32_t i = first; i < std::min(end, first + id_run); ++i) {
+            const Triangle& r = mesh.triangle(TriangleId{i});
+            if (r.live() && r.is_ghost()) ghosts[piece].push_back(i);
+        }
+    });
+    for (const auto& run : ghosts) {
+        for (const std::uint32_t i : run) {
+            const TriangleId id{i};
+            const Triangle& r = mesh.triangle(id);
+            const EdgeRef real = r.n[r.corner_of(ghost_vertex)];
+            mesh.triangle(real.triangle()).n[real.edge()] = EdgeRef::none();
+            pool.destroy(id);
+        }
     }
 }
 
@@ -196,53 +211,44 @@ std::vector<double> band_cuts(const Mesh& mesh, std::size_t prefix, std::size_t 
 // triangulation is the only Delaunay one.  Exact; on `threads` threads.
 bool strictly_delaunay(const Mesh& mesh, unsigned threads) {
     const std::uint32_t end = mesh.triangle_end();
-    std::atomic<bool> strict{true};
-    std::atomic<std::uint32_t> next{0};
     constexpr std::uint32_t run = 1u << 16;
-    const auto work = [&] {
-        // The neighbours and their far corners lie anywhere in memory: ask
-        // for them ahead (the neighbours' records `ahead` triangles early,
-        // the far corners half as early, once the records have arrived).
-        constexpr std::uint32_t ahead = 16;
-        const auto ask_neighbours = [&](std::uint32_t i) {
-            const Triangle& t = mesh.triangle(TriangleId{i});
-            for (const EdgeRef e : t.n) __builtin_prefetch(&mesh.triangle(e.triangle()));
-        };
-        const auto ask_far = [&](std::uint32_t i) {
-            const Triangle& t = mesh.triangle(TriangleId{i});
-            if (!t.live()) return;
-            for (const EdgeRef e : t.n) {
-                const VertexId far = mesh.triangle(e.triangle()).v[e.edge()];
-                if (far != ghost_vertex) __builtin_prefetch(&mesh.point(far));
-            }
-        };
-        for (std::uint32_t first; (first = next.fetch_add(run)) < end && strict.load();) {
-            const std::uint32_t last = std::min(end, first + run);
-            for (std::uint32_t i = first; i < last; ++i) {
-                if (i + ahead < last) ask_neighbours(i + ahead);
-                if (i + ahead / 2 < last) ask_far(i + ahead / 2);
-                const Triangle& t = mesh.triangle(TriangleId{i});
-                if (!t.live() || t.is_ghost()) continue;
-                for (int k = 0; k < 3; ++k) {
-                    const EdgeRef across = t.n[k];
-                    if (index(across.triangle()) < i) continue;  // each edge once
-                    const Triangle& u = mesh.triangle(across.triangle());
-                    if (u.is_ghost()) continue;
-                    const VertexId far = u.v[across.edge()];
-                    if (geometry::incircle(mesh.point(t.v[0]), mesh.point(t.v[1]),
-                                           mesh.point(t.v[2]), mesh.point(far)) >= 0) {
-                        strict.store(false);
-                        return;
-                    }
-                }
-            }
+    std::atomic<bool> strict{true};
+    // The neighbours and their far corners lie anywhere in memory: ask for
+    // them ahead (the neighbours' records `ahead` triangles early, the far
+    // corners half as early, once the records have arrived).
+    constexpr std::uint32_t ahead = 16;
+    const auto ask_neighbours = [&](std::uint32_t i) {
+        for (const EdgeRef e : mesh.triangle(TriangleId{i}).n)
+            __builtin_prefetch(&mesh.triangle(e.triangle()));
+    };
+    const auto ask_far = [&](std::uint32_t i) {
+        const Triangle& t = mesh.triangle(TriangleId{i});
+        if (!t.live()) return;
+        for (const EdgeRef e : t.n) {
+            const VertexId far = mesh.triangle(e.triangle()).v[e.edge()];
+            if (far != ghost_vertex) __builtin_prefetch(&mesh.point(far));
         }
     };
-    {
-        std::vector<std::jthread> helpers;
-        for (unsigned h = 1; h < threads; ++h) helpers.emplace_back(work);
-        work();
-    }
+    run_pieces(threads, (std::size_t{end} + run - 1) / run, [&](std::size_t piece) {
+        const auto first = static_cast<std::uint32_t>(piece * run);
+        const std::uint32_t last = std::min(end, first + run);
+        for (std::uint32_t i = first; i < last && strict.load(std::memory_order_relaxed); ++i) {
+            if (i + ahead < last) ask_neighbours(i + ahead);
+            if (i + ahead / 2 < last) ask_far(i + ahead / 2);
+            const Triangle& t = mesh.triangle(TriangleId{i});
+            if (!t.live() || t.is_ghost()) continue;
+            for (int k = 0; k < 3; ++k) {
+                const EdgeRef across = t.n[k];
+                if (index(across.triangle()) < i) continue;  // each edge once
+                const Triangle& u = mesh.triangle(across.triangle());
+                if (u.is_ghost()) continue;
+                const VertexId far = u.v[across.edge()];
+                if (geometry::incircle(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]),
+                                       mesh.point(far)) >= 0)
+                    strict.store(false, std::memory_order_relaxed);
+            }
+        }
+    });
     return strict.load();
 }
 
@@ -295,15 +301,21 @@ bool insert_vertices_in_bands(Mesh& mesh, const std::vector<std::uint32_t>& orde
 // From insertion order back to input numbering; the duplicates become
 // VertexKind::duplicate.
 void renumber_to_input(Mesh& mesh, std::span<const Point> points,
-                       const std::vector<std::uint32_t>& order, const KeptBy& kept_by) {
+                       const std::vector<std::uint32_t>& order, const KeptBy& kept_by,
+                       unsigned threads) {
     const std::uint32_t end = mesh.triangle_end();
-    for (std::uint32_t t = 0; t < end; ++t) {
-        Triangle& r = mesh.triangle(TriangleId{t});
-        if (!r.live()) continue;
-        for (VertexId& v : r.v) v = VertexId{order[index(v)]};
-    }
-    for (std::size_t i = 0; i < points.size(); ++i)
-        mesh.set_point(VertexId{static_cast<std::uint32_t>(i)}, points[i]);
+    run_pieces(threads, id_runs(end), [&](std::size_t piece) {
+        const auto first = static_cast<std::uint32_t>(piece * id_run);
+        for (std::uint32_t t = first; t < std::min(end, first + id_run); ++t) {
+            Triangle& r = mesh.triangle(TriangleId{t});
+            if (!r.live()) continue;
+            for (VertexId& v : r.v) v = VertexId{order[index(v)]};
+        }
+    });
+    run_pieces(threads, id_runs(points.size()), [&](std::size_t piece) {
+        for (std::size_t i = piece * id_run; i < std::min(points.size(), (piece + 1) * id_run); ++i)
+            mesh.set_point(VertexId{static_cast<std::uint32_t>(i)}, points[i]);
+    });
     for (auto [lost, kept] : kept_by) mesh.set_kind(VertexId{lost}, VertexKind::duplicate);
 }
 
@@ -340,12 +352,15 @@ mesh::Mesh delaunay(std::span<const Point> points, DelaunayReport& report,
     // The gather reads the input in curve order, at random: ask for each
     // point some iterations ahead, so that the misses overlap.
     constexpr std::size_t ahead = 16;
-    for (std::size_t i = 0; i < n; ++i) {
-        const VertexId v{static_cast<std::uint32_t>(i)};
-        if (i + ahead < n) __builtin_prefetch(&points[order[i + ahead]]);
-        mesh.set_point(v, points[order[i]]);
-        mesh.set_kind(v, VertexKind::input);
-    }
+    run_pieces(options.threads, id_runs(n), [&](std::size_t piece) {
+        const std::size_t last = std::min(n, (piece + 1) * id_run);
+        for (std::size_t i = piece * id_run; i < last; ++i) {
+            const VertexId v{static_cast<std::uint32_t>(i)};
+            if (i + ahead < last) __builtin_prefetch(&points[order[i + ahead]]);
+            mesh.set_point(v, points[order[i]]);
+            mesh.set_kind(v, VertexKind::input);
+        }
+    });
     KeptBy kept_by;
     if (options.threads >= 2 && n >= options.parallel_from) {
         if (!insert_vertices_in_bands(mesh, order, ib, ic, options.threads, kept_by))
@@ -355,8 +370,8 @@ mesh::Mesh delaunay(std::span<const Point> points, DelaunayReport& report,
         Pool pool(mesh);
         if (options.threads < 2 || n < options.parallel_from)
             kept_by = insert_vertices(pool, order, ib, ic);
-        remove_ghosts(pool);
-        renumber_to_input(mesh, points, order, kept_by);
+        remove_ghosts(pool, options.threads);
+        renumber_to_input(mesh, points, order, kept_by, options.threads);
     }
     report.duplicates = duplicate_pairs(kept_by);
     return mesh;

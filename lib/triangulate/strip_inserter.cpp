@@ -3,13 +3,11 @@
 #include "triangulate/strip_inserter.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <exception>
 #include <limits>
-#include <thread>
 
 #include "geometry/predicates.hpp"
 #include "mesh/locate.hpp"
+#include "mesh/slices.hpp"
 #include "triangulate/point_inserter.hpp"
 
 namespace gpdr::triangulate {
@@ -54,7 +52,6 @@ struct StripInserter::Band {
     std::vector<std::uint32_t> deferred;  // in order
     TriangleId start = no_triangle;
     std::uint64_t inserted = 0;
-    std::exception_ptr failure;
 };
 
 StripInserter::StripInserter(Mesh& mesh, std::vector<double> cuts, double y_low, double y_high,
@@ -140,25 +137,10 @@ std::vector<std::uint32_t> StripInserter::insert_round(std::uint32_t first, std:
         }
     }
 
-    std::atomic<std::uint32_t> next{0};
-    const auto work = [&] {
-        for (std::uint32_t s; (s = next.fetch_add(1)) < bands;) {
-            try {
-                run_band(band[s], s);
-            } catch (...) {
-                band[s].failure = std::current_exception();
-            }
-        }
-    };
-    {
-        std::vector<std::jthread> helpers;
-        for (unsigned h = 1; h < std::min(threads_, bands); ++h) helpers.emplace_back(work);
-        work();
-    }
+    run_pieces(threads_, bands, [&](std::size_t s) { run_band(band[s], static_cast<std::uint32_t>(s)); });
 
     std::vector<std::uint32_t> deferred = std::move(on_cuts);
     for (Band& b : band) {
-        if (b.failure) std::rethrow_exception(b.failure);
         inserted_ += b.inserted;
         deferred.insert(deferred.end(), b.deferred.begin(), b.deferred.end());
     }

@@ -274,26 +274,37 @@ bool insert_vertices_in_bands(Mesh& mesh, const std::vector<std::uint32_t>& orde
                               random_state, kept_by);
         }
     }
-    std::vector<std::uint32_t> skip{static_cast<std::uint32_t>(std::min(ib, ic)),
-                                    static_cast<std::uint32_t>(std::max(ib, ic))};
-    {
-        double y_low = mesh.point(VertexId{0}).y, y_high = y_low;
-        for (std::size_t i = 0; i < n; ++i) {
-            const double y = mesh.point(VertexId{static_cast<std::uint32_t>(i)}).y;
-            y_low = std::min(y_low, y);
-            y_high = std::max(y_high, y);
-        }
-        StripInserter in_bands(mesh, band_cuts(mesh, prefix, n, bands), y_low, y_high, threads);
-        for (std::size_t first = prefix; first < n;) {
-            const std::size_t last = std::min(n, 2 * first);
-            const std::vector<std::uint32_t> deferred = in_bands.insert_round(
-                static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(last), skip, hint);
-            hint = in_bands.live_triangle(hint);
-            PointInserter inserter(in_bands.pool());
-            for (const std::uint32_t v : deferred)
-                hint = insert_one(inserter, order, VertexId{v}, hint, random_state, kept_by);
-            first = last;
-        }
+    double y_low = mesh.point(VertexId{0}).y, y_high = y_low;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double y = mesh.point(VertexId{static_cast<std::uint32_t>(i)}).y;
+        y_low = std::min(y_low, y);
+        y_high = std::max(y_high, y);
+    }
+    // The points put off gather along the cuts: a second set of bands, cut
+    // half way between the first set's cuts, takes most of them on all
+    // threads too; what both put off goes in on one thread.
+    const std::vector<double> cuts = band_cuts(mesh, prefix, n, bands);
+    std::vector<double> between_cuts;
+    for (std::size_t k = 0; k + 1 < cuts.size(); ++k)
+        between_cuts.push_back(cuts[k] + (cuts[k + 1] - cuts[k]) / 2);
+    StripInserter in_bands(mesh, cuts, y_low, y_high, threads);
+    StripInserter in_between(mesh, between_cuts, y_low, y_high, threads);
+    std::vector<std::uint32_t> round;
+    for (std::size_t first = prefix; first < n;) {
+        const std::size_t last = std::min(n, 2 * first);
+        round.clear();
+        for (std::size_t i = first; i < last; ++i)
+            if (i != ib && i != ic) round.push_back(static_cast<std::uint32_t>(i));
+        const std::vector<std::uint32_t> put_off = in_bands.insert_round(round, hint);
+        hint = in_bands.live_triangle(hint);
+        const std::vector<std::uint32_t> deferred = in_between.insert_round(put_off, hint);
+        hint = in_between.live_triangle(hint);
+        // (The pool whose lane was set last: the lanes' list of chunks is
+        // the mesh's as of the last Lane::first.)
+        PointInserter inserter(in_between.pool());
+        for (const std::uint32_t v : deferred)
+            hint = insert_one(inserter, order, VertexId{v}, hint, random_state, kept_by);
+        first = last;
     }
     return strictly_delaunay(mesh, threads);
 }

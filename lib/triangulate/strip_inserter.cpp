@@ -75,8 +75,7 @@ StripInserter::~StripInserter() {
     for (auto& pool : pools_) pool.reset();
 }
 
-std::vector<std::uint32_t> StripInserter::insert_round(std::uint32_t first, std::uint32_t last,
-                                                       std::span<const std::uint32_t> skip,
+std::vector<std::uint32_t> StripInserter::insert_round(std::span<const std::uint32_t> vertices,
                                                        TriangleId hint) {
     const auto bands = static_cast<std::uint32_t>(cuts_.size() + 1);
     Lane lane = Lane::first(mesh_, bands);
@@ -91,8 +90,7 @@ std::vector<std::uint32_t> StripInserter::insert_round(std::uint32_t first, std:
     // Each point to its band; a point on a cut belongs to none.
     std::vector<Band> band(bands);
     std::vector<std::uint32_t> on_cuts;
-    for (std::uint32_t v = first; v < last; ++v) {
-        if (std::binary_search(skip.begin(), skip.end(), v)) continue;
+    for (const std::uint32_t v : vertices) {
         const double x = mesh_.point(VertexId{v}).x;
         const auto s = static_cast<std::uint32_t>(
             std::upper_bound(cuts_.begin(), cuts_.end(), x) - cuts_.begin());

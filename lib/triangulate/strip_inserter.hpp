@@ -20,8 +20,9 @@
 // owns, never on the other bands' timing, and each band claims its slots
 // from its own lane pool (mesh/pool.hpp: ids by a fixed rule): the mesh
 // after a round is the same for any number of threads and any schedule.
-// The deferred points are inserted one at a time after the round, in
-// order, by the caller.
+// The caller inserts the points put off: delaunay.cpp gives them to a
+// second set of bands, cut half way between these cuts, then inserts what
+// that puts off one at a time.
 //
 // Bowyer-Watson insertion of a point makes the Delaunay triangulation of
 // the points inserted so far whatever their order, so the parallel rounds
@@ -49,15 +50,15 @@ public:
     StripInserter(const StripInserter&) = delete;
     StripInserter& operator=(const StripInserter&) = delete;
 
-    // Inserts vertices first..last-1 (those in `skip`, ascending, are not
-    // inserted or returned), each band's on one thread; returns the ones
-    // put off, cut by cut and up each cut (short walks for the caller).
-    // one thread (the pools are idle then).
-    std::vector<std::uint32_t> insert_round(std::uint32_t first, std::uint32_t last,
-                                            std::span<const std::uint32_t> skip,
+    // Inserts `vertices`, each band's in their order and on one thread;
+    // returns the ones put off, cut by cut and up each cut (short walks for
+    // whoever inserts them next).  `hint` is a live triangle.
+    std::vector<std::uint32_t> insert_round(std::span<const std::uint32_t> vertices,
                                             mesh::TriangleId hint);
 
-    // The first band's pool, for the deferred points between rounds.
+    // The first band's pool, for the deferred points between rounds.  Its
+    // lane claims chunks from the list of the last round's Lane::first:
+    // use it only while no other lane pool's round came after that.
     mesh::Pool& pool() { return *pools_.front(); }
 
     // `hint` if it is alive, else a live triangle (a band's last one).

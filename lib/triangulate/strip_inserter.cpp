@@ -78,6 +78,23 @@ StripInserter::~StripInserter() {
 std::vector<std::uint32_t> StripInserter::insert_round(std::span<const std::uint32_t> vertices,
                                                        TriangleId hint) {
     const auto bands = static_cast<std::uint32_t>(cuts_.size() + 1);
+    set_lanes(bands);
+    std::vector<Band> band(bands);
+    std::vector<std::uint32_t> deferred = sort_into_bands(vertices, band);
+    find_starts(band, hint);
+    run_pieces(threads_, bands,
+               [&](std::size_t s) { run_band(band[s], static_cast<std::uint32_t>(s)); });
+    for (Band& b : band) {
+        inserted_ += b.inserted;
+        deferred.insert(deferred.end(), b.deferred.begin(), b.deferred.end());
+    }
+    order_for_walks(deferred);
+    return deferred;
+}
+
+// Every band's pool on its lane of this round's list (made at the first
+// round, moved at the others).
+void StripInserter::set_lanes(std::uint32_t bands) {
     Lane lane = Lane::first(mesh_, bands);
     for (std::uint32_t s = 0; s < bands; ++s) {
         lane.index = s;
@@ -86,65 +103,70 @@ std::vector<std::uint32_t> StripInserter::insert_round(std::span<const std::uint
         else
             pools_[s]->move_to_lane(lane);
     }
+}
 
-    // Each point to its band; a point on a cut belongs to none.
-    std::vector<Band> band(bands);
+// Each point to its band, in order; returns the points on a cut, which
+// belong to none.
+std::vector<std::uint32_t> StripInserter::sort_into_bands(std::span<const std::uint32_t> vertices,
+                                                          std::vector<Band>& band) const {
     std::vector<std::uint32_t> on_cuts;
     for (const std::uint32_t v : vertices) {
         const double x = mesh_.point(VertexId{v}).x;
-        const auto s = static_cast<std::uint32_t>(
-            std::upper_bound(cuts_.begin(), cuts_.end(), x) - cuts_.begin());
+        const auto s = static_cast<std::uint32_t>(std::upper_bound(cuts_.begin(), cuts_.end(), x) -
+                                                  cuts_.begin());
         if (s > 0 && cuts_[s - 1] == x)
             on_cuts.push_back(v);
         else
             band[s].points.push_back(v);
     }
+    return on_cuts;
+}
 
-    // Where each band starts: its last triangle if that is still its own,
-    // else the triangle that holds its first point, found by the ordinary
-    // walk (one thread, nothing moves yet), if the band owns it.
+void StripInserter::limit_to_band(PointInserter& inserter, std::uint32_t s) const {
+    inserter.limit_to(s == 0 ? -std::numeric_limits<double>::infinity() : cuts_[s - 1],
+                      s == cuts_.size() ? std::numeric_limits<double>::infinity() : cuts_[s]);
+}
+
+// Where each band starts: its last triangle if that is still its own, else
+// the triangle that holds one of its first points, found by the ordinary
+// walk (one thread, nothing moves yet), if the band owns it.  Anchors the
+// band no longer owns (the one-thread pass may have reused their slots
+// anywhere) are dropped: during the round a band reads only what it owned
+// when the round began, and its own.
+void StripInserter::find_starts(std::vector<Band>& band, TriangleId hint) {
     std::uint32_t random_state = 1;
-    for (std::uint32_t s = 0; s < bands; ++s) {
+    for (std::uint32_t s = 0; s < band.size(); ++s) {
         if (band[s].points.empty()) continue;
         PointInserter probe(*pools_[s]);
-        probe.limit_to(s == 0 ? -std::numeric_limits<double>::infinity() : cuts_[s - 1],
-                       s + 1 == bands ? std::numeric_limits<double>::infinity() : cuts_[s]);
-        // Anchors the band no longer owns (the one-thread pass may have
-        // reused their slots anywhere) are dropped: during the round a band
-        // reads only what it owned when the round began, and its own.
+        limit_to_band(probe, s);
+        const auto owned = [&](TriangleId t) {
+            return t != no_triangle && mesh_.triangle(t).live() && probe.owns(mesh_.triangle(t));
+        };
         for (std::uint32_t c = 0; c < cells; ++c) {
             TriangleId& a = anchors_[s * cells + c];
-            if (a != no_triangle && !(mesh_.triangle(a).live() && probe.owns(mesh_.triangle(a))))
-                a = no_triangle;
+            if (!owned(a)) a = no_triangle;
         }
-        const TriangleId mine = last_[s];
-        if (mine != no_triangle && mesh_.triangle(mine).live() && probe.owns(mesh_.triangle(mine))) {
-            band[s].start = mine;
+        if (owned(last_[s])) {
+            band[s].start = last_[s];
             continue;
         }
         last_[s] = no_triangle;
-        // (Its first points may lie near a cut: try a few.)
-        constexpr std::size_t tries = 64;
+        constexpr std::size_t tries = 64;  // its first points may lie near a cut
         for (std::size_t i = 0; i < std::min(tries, band[s].points.size()); ++i) {
             const Point& p = mesh_.point(VertexId{band[s].points[i]});
             const LocateResult where = locate(mesh_, p, hint, random_state);
-            if (where.where != Location::on_vertex && probe.owns(mesh_.triangle(where.triangle))) {
+            if (where.where != Location::on_vertex && owned(where.triangle)) {
                 band[s].start = where.triangle;
                 break;
             }
         }
     }
+}
 
-    run_pieces(threads_, bands, [&](std::size_t s) { run_band(band[s], static_cast<std::uint32_t>(s)); });
-
-    std::vector<std::uint32_t> deferred = std::move(on_cuts);
-    for (Band& b : band) {
-        inserted_ += b.inserted;
-        deferred.insert(deferred.end(), b.deferred.begin(), b.deferred.end());
-    }
-    // In an order for short walks: they gather along the cuts, so cut by
-    // cut (the nearest one), up each cut.  Any order makes the same
-    // triangulation; this one is fixed by the points alone.
+// Puts the points put off in an order for short walks: they gather along
+// the cuts, so cut by cut (the nearest one), up each cut.  Any order makes
+// the same triangulation; this one is fixed by the points alone.
+void StripInserter::order_for_walks(std::vector<std::uint32_t>& deferred) const {
     const auto nearest_cut = [&](double x) {
         const auto above = std::upper_bound(cuts_.begin(), cuts_.end(), x) - cuts_.begin();
         if (above == 0) return std::ptrdiff_t{0};
@@ -153,14 +175,15 @@ std::vector<std::uint32_t> StripInserter::insert_round(std::span<const std::uint
     };
     std::vector<std::pair<std::ptrdiff_t, std::uint32_t>> keyed;
     keyed.reserve(deferred.size());
-    for (const std::uint32_t v : deferred) keyed.push_back({nearest_cut(mesh_.point(VertexId{v}).x), v});
+    for (const std::uint32_t v : deferred)
+        keyed.push_back({nearest_cut(mesh_.point(VertexId{v}).x), v});
     std::sort(keyed.begin(), keyed.end(), [&](const auto& a, const auto& b) {
         if (a.first != b.first) return a.first < b.first;
-        const double ya = mesh_.point(VertexId{a.second}).y, yb = mesh_.point(VertexId{b.second}).y;
+        const double ya = mesh_.point(VertexId{a.second}).y;
+        const double yb = mesh_.point(VertexId{b.second}).y;
         return ya < yb || (ya == yb && a.second < b.second);
     });
     for (std::size_t i = 0; i < keyed.size(); ++i) deferred[i] = keyed[i].second;
-    return deferred;
 }
 
 TriangleId StripInserter::live_triangle(TriangleId hint) const {
@@ -172,10 +195,8 @@ TriangleId StripInserter::live_triangle(TriangleId hint) const {
 }
 
 void StripInserter::run_band(Band& band, std::uint32_t s) {
-    const auto bands = static_cast<std::uint32_t>(cuts_.size() + 1);
     PointInserter inserter(*pools_[s]);
-    inserter.limit_to(s == 0 ? -std::numeric_limits<double>::infinity() : cuts_[s - 1],
-                      s + 1 == bands ? std::numeric_limits<double>::infinity() : cuts_[s]);
+    limit_to_band(inserter, s);
     TriangleId at = band.start;
     TriangleId* anchors = &anchors_[s * cells];
     for (const std::uint32_t v : band.points) {

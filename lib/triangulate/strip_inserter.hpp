@@ -40,6 +40,8 @@
 
 namespace gpdr::triangulate {
 
+class PointInserter;
+
 class StripInserter {
 public:
     // `cuts`: the x values between the bands, ascending (bands - 1 of them);
@@ -68,6 +70,12 @@ public:
 
 private:
     struct Band;
+    void set_lanes(std::uint32_t bands);
+    std::vector<std::uint32_t> sort_into_bands(std::span<const std::uint32_t> vertices,
+                                               std::vector<Band>& band) const;
+    void limit_to_band(PointInserter& inserter, std::uint32_t s) const;
+    void find_starts(std::vector<Band>& band, mesh::TriangleId hint);
+    void order_for_walks(std::vector<std::uint32_t>& deferred) const;
     void run_band(Band& band, std::uint32_t s);
 
     mesh::Mesh& mesh_;

@@ -96,11 +96,13 @@ TEST_CASE("Delaunay in bands: random points", "[triangulate][delaunay][parallel]
 TEST_CASE("Delaunay in bands: clustered points", "[triangulate][delaunay][parallel]") {
     // Most points in a small disc: the bands' cuts crowd there.
     std::vector<Point> points = random_points(40'000, 11);
-    for (std::size_t i = 0; i < points.size(); i += 4) points[i] = {0.5 + points[i].x * 1e-3, 0.5 + points[i].y * 1e-3};
+    for (std::size_t i = 0; i < points.size(); i += 4)
+        points[i] = {0.5 + points[i].x * 1e-3, 0.5 + points[i].y * 1e-3};
     require_same_for_all_threads(points);
 }
 
-TEST_CASE("Delaunay in bands: a grid falls back to one thread", "[triangulate][delaunay][parallel]") {
+TEST_CASE("Delaunay in bands: a grid falls back to one thread",
+          "[triangulate][delaunay][parallel]") {
     // Every square's four corners are cocircular: no unique triangulation,
     // so the bands' result is discarded and the mesh is one thread's.
     std::vector<Point> points;

@@ -151,6 +151,9 @@ public:
     std::uint64_t handed_off_local = 0;
     std::uint64_t relation9_exceptions = 0;
     std::uint64_t zone_escapes = 0;
+    // Queue storage given back to the allocator since the master last
+    // looked (run_rounds returns it to the system once it adds up).
+    std::uint64_t released_bytes = 0;
     bool outgrew_root = false;
     bool stopped = false;
     mesh::Pool& pool() { return pool_; }
@@ -256,6 +259,7 @@ private:
     bool refine_window(const Node& n, LeafState& state);
     void route_handed_off(LeafState& state);
     void split_balance_candidates(const std::vector<NodeId>& balance);
+    void release_idle_queues(LeafState& state);
     int granularity_at(const Node& n) const;
     void split(NodeId leaf);
 

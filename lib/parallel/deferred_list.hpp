@@ -93,6 +93,57 @@ public:
         ++size_;
     }
 
+    // Whether sweep() would be worth its reads: the list has doubled since
+    // it was last swept (or made), and holds more than a few blocks.  So a
+    // list is read at most about twice per entry it was given.
+    bool worth_sweeping() const {
+        return size_ >= 2 * swept_size_ && size_ >= 8 * DeferredBlock::capacity;
+    }
+    // Drops the entries that alive(e) calls dead and packs the others, in
+    // their order, into as few blocks as they fill; gives the emptied
+    // blocks back.  (Entries pushed later may then be read before them
+    // rather than after: nothing that reads a list depends on its order,
+    // for counts add up the same in any order.)  alive.ahead(e) is called
+    // look_ahead entries before alive(e), for prefetching.
+    template <class Alive>
+    void sweep(Alive&& alive, BlockPool& pool) {
+        DeferredBlock* w = head_;
+        std::uint32_t wi = 0;
+        std::size_t kept = 0;
+        // The write position never passes the read position: a block is
+        // written past its first entries only once it has been read.
+        for (DeferredBlock* r = head_; r != nullptr; r = r->next) {
+            for (std::uint32_t i = 0; i < look_ahead && i < r->size; ++i) alive.ahead(r->items[i]);
+            for (std::uint32_t i = 0; i < r->size; ++i) {
+                if (i + look_ahead < r->size) alive.ahead(r->items[i + look_ahead]);
+                if (!alive(r->items[i])) continue;
+                if (wi == DeferredBlock::capacity) {
+                    w->size = wi;
+                    w = w->next;
+                    wi = 0;
+                }
+                w->items[wi++] = r->items[i];
+                ++kept;
+            }
+        }
+        DeferredBlock* spare = nullptr;
+        if (kept == 0) {
+            spare = head_;
+            head_ = nullptr;
+        } else {
+            w->size = wi;
+            spare = w->next;
+            w->next = nullptr;
+        }
+        while (spare != nullptr) {
+            DeferredBlock* next = spare->next;
+            pool.give(spare);
+            spare = next;
+        }
+        size_ = kept;
+        swept_size_ = kept;
+    }
+
     // Takes over the entries of `from` (left empty) without reading them:
     // its blocks are linked in as they are (in constant time when this list
     // is empty, as a new leaf's is).
@@ -105,8 +156,10 @@ public:
         }
         head_ = from.head_;
         size_ += from.size_;
+        swept_size_ += from.swept_size_;
         from.head_ = nullptr;
         from.size_ = 0;
+        from.swept_size_ = 0;
     }
 
     template <class F>
@@ -125,6 +178,7 @@ public:
         DeferredBlock* b = head_;
         head_ = nullptr;
         size_ = 0;
+        swept_size_ = 0;
         while (b != nullptr) {
             show_ahead(*b, ahead);
             for (std::uint32_t i = 0; i < b->size; ++i) {
@@ -154,6 +208,7 @@ private:
 
     DeferredBlock* head_ = nullptr;
     std::size_t size_ = 0;
+    std::size_t swept_size_ = 0;  // size_ after the last sweep
 };
 
 }  // namespace gpdr::parallel

@@ -234,6 +234,13 @@ private:
     bool alive(DeferredTriangle e) const {
         return mesh_.triangle(e.t).load_generation() == e.generation;
     }
+    // alive() and prefetch() as DeferredList::sweep asks them.
+    struct Liveness {
+        const Worker* worker;
+        bool operator()(DeferredTriangle e) const { return worker->alive(e); }
+        void ahead(DeferredTriangle e) const { worker->prefetch(e.t); }
+    };
+    Liveness liveness() const { return {this}; }
     // Asks for triangle t's slot ahead of reading it (deferred_list.hpp: look_ahead).
     void prefetch(mesh::TriangleId t) const { __builtin_prefetch(&mesh_.triangle(t)); }
     // The same for the points of e's corners, if e is alive (its corners are
@@ -260,6 +267,7 @@ private:
     void route_handed_off(LeafState& state);
     void split_balance_candidates(const std::vector<NodeId>& balance);
     void release_idle_queues(LeafState& state);
+    void sweep_deferred(LeafState& state);
     int granularity_at(const Node& n) const;
     void split(NodeId leaf);
 

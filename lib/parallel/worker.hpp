@@ -187,12 +187,11 @@ private:
     // triangles that died are dropped, the triangles now only one level
     // below a child (or that straddle two children) are counted, the
     // others listed in a child.
-    // Nothing looks at an entry before that: a listed triangle that dies
-    // costs its 8 bytes until a split reads it, or until refinement ends (at
-    // most 8 bytes per triangle ever made; the lists for the children keep
-    // dead entries longer, and the batch below keeps many out: the pipe's
-    // peak at -g4 is 873-875 MiB), and most of the final mesh is never
-    // counted.
+    // Nothing but a sweep looks at an entry before that: a listed triangle
+    // that dies costs its 8 bytes until a split reads the list, or until
+    // the run that ends with the list doubled since its last sweep drops it
+    // (sweep_deferred; the batch below keeps many out from the start), and
+    // most of the final mesh is never counted.
     // (On the pipe the hand-downs read 3.8 million entries and pass 11.7
     // million on unread.  One list per leaf, all of it read at a split,
     // read 22 million, and 95% of its live entries went on to a child's

@@ -124,9 +124,11 @@ std::vector<std::string> check(const Options& options, int base,
 
 // The finished mesh as arrays, and the counts of `result` they give.  The
 // triangles are materialised with `materialise`, else only when an output
-// derives from them.  Takes the vertices out of `input`.
-void to_arrays(const Options& options, api::Input& input, bool materialise, Meshed& m,
-               JobResult& result) {
+// derives from them.  With `free_points`, the mesh's points are given back
+// as they are copied (ArrayChoices::free_points_of): the caller reads only
+// the arrays from then on.  Takes the vertices out of `input`.
+void to_arrays(const Options& options, api::Input& input, bool materialise, bool free_points,
+               Meshed& m, JobResult& result) {
     // Neighbours cost 12 bytes per triangle: only the outputs that are
     // derived from them get them.
     const bool neighbours = options.write_neighbours || options.write_edges ||
@@ -138,6 +140,7 @@ void to_arrays(const Options& options, api::Input& input, bool materialise, Mesh
     // jettisoning (write_outputs.cpp).
     choices.mesh_ids = options.write_edges || options.order == 2 || options.jettison;
     choices.threads = parallel::thread_count(options.threads);
+    if (free_points) choices.free_points_of = &m.tri.mesh;
     m.arrays =
         api::mesh_to_arrays(m.tri.mesh, std::move(input.nodes.data), result.input_vertices,
                             m.tri.triangle_attribute_count, m.tri.region_attributes, choices);
@@ -153,8 +156,8 @@ void to_arrays(const Options& options, api::Input& input, bool materialise, Mesh
 // to arrays, and -V's quality statistics; fills in `result`'s counts and the
 // stages' times.
 Meshed make_mesh(const Options& options, api::Input& input, const WarningSink& warn,
-                 const JobPlugins& plugins, bool materialise, JobResult& result, Stopwatch& clock,
-                 Progress* progress = nullptr) {
+                 const JobPlugins& plugins, bool materialise, bool free_points, JobResult& result,
+                 Stopwatch& clock, Progress* progress = nullptr) {
     Meshed m;
     if (progress != nullptr) progress->enter(Progress::Stage::triangulating);
     // -C compares the mesh with the input as read, not as the stages saw it.
@@ -172,7 +175,7 @@ Meshed make_mesh(const Options& options, api::Input& input, const WarningSink& w
         result.checked = true;
         result.check_problems = check(options, input.nodes.base, *geometry, m.tri, m.refinement);
     }
-    to_arrays(options, input, materialise, m, result);
+    to_arrays(options, input, materialise, free_points, m, result);
     if (options.verbosity > 0) {
         // Before -o2 changes the triangles; not counted as output time (as
         // in Triangle, whose "Output milliseconds" are the writing alone).
@@ -219,7 +222,9 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
     if (progress != nullptr) progress->set_input_vertices(result.input_vertices);
     result.read_seconds = clock.lap();
 
-    Meshed m = make_mesh(options, input, warn, plugins, false, result, clock, progress);
+    // The files are written from the arrays and the mesh's triangles and
+    // subsegments (write_outputs.cpp): never from its points.
+    Meshed m = make_mesh(options, input, warn, plugins, false, true, result, clock, progress);
 
     api::OutputRequest request;
     request.options = &options;
@@ -253,7 +258,7 @@ MemoryJobResult run_job_in_memory(const Options& given, MeshInput input, const W
     result.input_vertices = in.nodes.data.size();
     result.read_seconds = clock.lap();
 
-    Meshed m = make_mesh(options, in, warn, plugins, true, result, clock);
+    Meshed m = make_mesh(options, in, warn, plugins, true, false, result, clock);
     out.mesh = api::output_in_memory(options, m.tri.mesh, m.arrays);
     result.write_seconds += clock.lap();
 

@@ -101,7 +101,8 @@ TriangleNumbers triangle_numbers(const mesh::Mesh& mesh) {
 // numbers them from the count of the chunks before it, which gives the
 // numbers one pass in id order gives.
 VertexNumbers number_vertices(const mesh::Mesh& mesh, std::size_t input_count, NodeSet& nodes,
-                              std::vector<std::uint32_t>* mesh_ids, unsigned threads) {
+                              std::vector<std::uint32_t>* mesh_ids, unsigned threads,
+                              mesh::Mesh* free_points) {
     constexpr unsigned bits = VertexNumbers::bits;
     const auto end =
         static_cast<std::uint32_t>(std::max<std::size_t>(mesh.vertex_end(), input_count));
@@ -126,7 +127,8 @@ VertexNumbers number_vertices(const mesh::Mesh& mesh, std::size_t input_count, N
         first[i + 1] = n;
     });
     for (std::size_t i = 0; i < chunks.size(); ++i) first[i + 1] += first[i];
-    nodes.xy.resize(2 * std::size_t{first.back()});
+    const bool copy_here = free_points == nullptr;
+    if (copy_here) nodes.xy.resize(2 * std::size_t{first.back()});
     if (mesh_ids != nullptr) mesh_ids->resize(first.back());
     mesh::run_pieces(threads, chunks.size(), [&](std::size_t i) {
         const mesh::ChunkIds ids = ids_of(i);
@@ -138,12 +140,32 @@ VertexNumbers number_vertices(const mesh::Mesh& mesh, std::size_t input_count, N
             }
             number[v] = n;
             if (mesh_ids != nullptr) (*mesh_ids)[n] = v;
-            const auto& p = mesh.point(mesh::VertexId{v});
-            nodes.xy[2 * std::size_t{n}] = p.x;
-            nodes.xy[2 * std::size_t{n} + 1] = p.y;
+            if (copy_here) {
+                const auto& p = mesh.point(mesh::VertexId{v});
+                nodes.xy[2 * std::size_t{n}] = p.x;
+                nodes.xy[2 * std::size_t{n} + 1] = p.y;
+            }
             ++n;
         }
     });
+    if (!copy_here) {
+        // In id order, appended to storage reserved untouched, each granule
+        // of the point table given back once copied: the coordinates are
+        // held about once, not twice, at any moment.
+        std::vector<double>().swap(nodes.xy);
+        nodes.xy.reserve(2 * std::size_t{first.back()});
+        for (std::size_t i = 0; i < chunks.size(); ++i) {
+            const mesh::ChunkIds ids = ids_of(i);
+            for (std::uint32_t v = ids.first; v < ids.last; ++v) {
+                if (!written(v)) continue;
+                const auto& p = mesh.point(mesh::VertexId{v});
+                nodes.xy.push_back(p.x);
+                nodes.xy.push_back(p.y);
+            }
+            free_points->discard_points_below(ids.last);
+        }
+        free_points->discard_points();
+    }
     return number;
 }
 
@@ -412,8 +434,11 @@ MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t inp
     const bool copies_attributes =
         nodes.attribute_count != 0 && mesh.attributes().width() == nodes.attribute_count;
     const bool mesh_ids = choices.mesh_ids || copies_attributes;
+    if (choices.free_points_of != nullptr && choices.free_points_of != &mesh)
+        throw InternalError("output: free_points_of names another mesh");
     VertexNumbers number =
-        number_vertices(mesh, input_count, nodes, mesh_ids ? &out.mesh_ids : nullptr, threads);
+        number_vertices(mesh, input_count, nodes, mesh_ids ? &out.mesh_ids : nullptr, threads,
+                        choices.free_points_of);
     copy_added_attributes(mesh, input_count, out.mesh_ids, nodes);
     if (!choices.mesh_ids) std::vector<std::uint32_t>().swap(out.mesh_ids);
 

@@ -9,10 +9,6 @@
 #include <optional>
 #include <vector>
 
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
-
 #include <fmt/format.h>
 
 #include <gpdr/errors.hpp>
@@ -20,6 +16,7 @@
 #include "api/job_stages.hpp"
 #include "api/memory_available.hpp"
 #include "api/memory_estimate.hpp"
+#include "parallel/freed_memory.hpp"
 #include "parallel/refine_parallel.hpp"
 #include "parallel/rounds.hpp"
 #include "parallel/stopwatch.hpp"
@@ -142,14 +139,12 @@ void warn_after_refinement(const Options& o, const refine::RefineReport& r,
 }
 
 void trim_freed_memory() {
-#if defined(__GLIBC__)
     // The refiners' queues, lists and quadtree are freed now, much of it in
     // the refining threads' own malloc arenas, which keep freed memory
     // mapped.  The output arrays come next and would be mapped on top of
     // it, raising the peak by what refinement had in use (about 140 MB on
     // the graded pipe with -j2): give it back first.
-    malloc_trim(0);
-#endif
+    parallel::return_freed_memory();
 }
 
 // ---- above 34 degrees ---------------------------------------------------------

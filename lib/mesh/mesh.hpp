@@ -73,6 +73,18 @@ public:
     void set_point(VertexId v, const Point& p) { points_[index(v)] = p; }
     VertexKind kind(VertexId v) const { return kinds_[index(v)]; }
     void set_kind(VertexId v, VertexKind k) { kinds_[index(v)] = k; }
+    // Gives back the memory of the points of ids below `end` (whole
+    // granules of the table: some just below it may stay), or of all
+    // points: for a mesh whose points were copied out and are never read
+    // again (api::ArrayChoices::free_points_of).  Reading one of those
+    // points afterwards faults.
+    void discard_points_below(std::uint32_t end) {
+        points_.discard_below(end >> vertex_chunk_bits);
+    }
+    void discard_points() {
+        constexpr std::uint32_t g = PointTable::granule_chunks;
+        points_.discard_below((vertex_chunks_claimed() + g - 1) / g * g);
+    }
     // One past the largest vertex id claimed so far.
     std::uint32_t vertex_end() const { return vertex_end_.load(std::memory_order_acquire); }
 

@@ -129,6 +129,25 @@ public:
         return true;
     }
 
+    // Gives the memory of every whole granule below chunk `chunk` back to
+    // the system, for good: its elements may no longer be read or written
+    // (they fault, as a bug should).  For a table whose elements have been
+    // copied elsewhere and are never read again; calls must not overlap.
+    void discard_below(std::uint32_t chunk) {
+        const std::uint32_t end =
+            (chunk < reserved_chunks_ ? chunk : reserved_chunks_) / granule_chunks;
+        if (end <= discarded_granules_) return;
+        T* first = base_ + std::size_t{discarded_granules_} * granule_chunks * chunk_size;
+        const std::size_t length =
+            std::size_t{end - discarded_granules_} * granule_chunks * chunk_bytes;
+        madvise(first, length, MADV_DONTNEED);
+        mprotect(first, length, PROT_NONE);
+        for (std::uint32_t g = discarded_granules_; g < end; ++g)
+            if (flags_[reserved_chunks_ + g] != 0)
+                granules_.fetch_sub(1, std::memory_order_relaxed);
+        discarded_granules_ = end;
+    }
+
     // Bytes made writable (whole granules; untouched pages of them cost
     // nothing) and the flags.
     std::size_t bytes() const {
@@ -150,6 +169,7 @@ private:
         flags_ = nullptr;
         reserved_chunks_ = 0;
         granules_ = 0;
+        discarded_granules_ = 0;
     }
 
     void take(ReservedTable& other) {
@@ -157,12 +177,14 @@ private:
         flags_ = std::exchange(other.flags_, nullptr);
         reserved_chunks_ = std::exchange(other.reserved_chunks_, 0);
         granules_ = other.granules_.exchange(0);
+        discarded_granules_ = std::exchange(other.discarded_granules_, 0);
     }
 
     T* base_ = nullptr;
     std::uint8_t* flags_ = nullptr;  // per chunk, then per granule
     std::uint32_t reserved_chunks_ = 0;
     std::atomic<std::size_t> granules_{0};
+    std::uint32_t discarded_granules_ = 0;  // granules below it were discarded
 };
 
 }  // namespace gpdr::mesh

@@ -29,8 +29,10 @@ struct DeferredBlock {
     // future child, each with a partly filled block: with 4 KiB blocks the
     // graded pipe's peak was 1116 MiB at -g3 (23,000 leaves) against 934.)
     static constexpr std::uint32_t capacity = 126;
-    DeferredBlock* next = nullptr;
-    std::uint32_t size = 0;
+    // (No initialisers: a slab's blocks are left untouched until handed
+    // out; BlockPool::take sets these.)
+    DeferredBlock* next;
+    std::uint32_t size;
     DeferredTriangle items[capacity];
 };
 
@@ -39,22 +41,23 @@ struct DeferredBlock {
 // stays owned by the pool that made it, and all pools are destroyed
 // together after refinement, when no list is read any more.
 //
-// Blocks are made 1024 at a time (1 MiB): the allocator serves a request that
-// large from memory of its own that goes back to the system when the pool
-// is destroyed, instead of leaving hundreds of megabytes of small freed
-// chunks in the heap while the output is written.
+// Blocks are made 64 at a time (64 KiB), and a block is first written when
+// it is handed out.  Each of the 64 lanes has a slab it has not used up:
+// slabs of 1 MiB whose blocks were all initialised when made held 36 MiB
+// of the graded pipe's -j2 peak that no list ever used.
 class BlockPool {
 public:
     DeferredBlock* take() {
-        if (free_ == nullptr) {
+        DeferredBlock* b = free_;
+        if (b != nullptr) {
+            free_ = b->next;
+        } else {
             if (unused_ == 0) {
-                made_.push_back(std::make_unique<DeferredBlock[]>(slab_blocks));
+                made_.push_back(std::make_unique_for_overwrite<DeferredBlock[]>(slab_blocks));
                 unused_ = slab_blocks;
             }
-            return &made_.back()[slab_blocks - unused_--];
+            b = &made_.back()[slab_blocks - unused_--];
         }
-        DeferredBlock* b = free_;
-        free_ = b->next;
         b->next = nullptr;
         b->size = 0;
         return b;
@@ -65,7 +68,7 @@ public:
     }
 
 private:
-    static constexpr std::size_t slab_blocks = 1024;
+    static constexpr std::size_t slab_blocks = 64;
     std::vector<std::unique_ptr<DeferredBlock[]>> made_;
     std::size_t unused_ = 0;  // blocks of the last slab never handed out
     DeferredBlock* free_ = nullptr;
@@ -93,6 +96,57 @@ public:
         ++size_;
     }
 
+    // Whether sweep() would be worth its reads: the list has doubled since
+    // it was last swept (or made), and holds more than a few blocks.  So a
+    // list is read at most about twice per entry it was given.
+    bool worth_sweeping() const {
+        return size_ >= 2 * swept_size_ && size_ >= 8 * DeferredBlock::capacity;
+    }
+    // Drops the entries that alive(e) calls dead and packs the others, in
+    // their order, into as few blocks as they fill; gives the emptied
+    // blocks back.  (Entries pushed later may then be read before them
+    // rather than after: nothing that reads a list depends on its order,
+    // for counts add up the same in any order.)  alive.ahead(e) is called
+    // look_ahead entries before alive(e), for prefetching.
+    template <class Alive>
+    void sweep(Alive&& alive, BlockPool& pool) {
+        DeferredBlock* w = head_;
+        std::uint32_t wi = 0;
+        std::size_t kept = 0;
+        // The write position never passes the read position: a block is
+        // written past its first entries only once it has been read.
+        for (DeferredBlock* r = head_; r != nullptr; r = r->next) {
+            for (std::uint32_t i = 0; i < look_ahead && i < r->size; ++i) alive.ahead(r->items[i]);
+            for (std::uint32_t i = 0; i < r->size; ++i) {
+                if (i + look_ahead < r->size) alive.ahead(r->items[i + look_ahead]);
+                if (!alive(r->items[i])) continue;
+                if (wi == DeferredBlock::capacity) {
+                    w->size = wi;
+                    w = w->next;
+                    wi = 0;
+                }
+                w->items[wi++] = r->items[i];
+                ++kept;
+            }
+        }
+        DeferredBlock* spare = nullptr;
+        if (kept == 0) {
+            spare = head_;
+            head_ = nullptr;
+        } else {
+            w->size = wi;
+            spare = w->next;
+            w->next = nullptr;
+        }
+        while (spare != nullptr) {
+            DeferredBlock* next = spare->next;
+            pool.give(spare);
+            spare = next;
+        }
+        size_ = kept;
+        swept_size_ = kept;
+    }
+
     // Takes over the entries of `from` (left empty) without reading them:
     // its blocks are linked in as they are (in constant time when this list
     // is empty, as a new leaf's is).
@@ -105,8 +159,10 @@ public:
         }
         head_ = from.head_;
         size_ += from.size_;
+        swept_size_ += from.swept_size_;
         from.head_ = nullptr;
         from.size_ = 0;
+        from.swept_size_ = 0;
     }
 
     template <class F>
@@ -125,6 +181,7 @@ public:
         DeferredBlock* b = head_;
         head_ = nullptr;
         size_ = 0;
+        swept_size_ = 0;
         while (b != nullptr) {
             show_ahead(*b, ahead);
             for (std::uint32_t i = 0; i < b->size; ++i) {
@@ -154,6 +211,7 @@ private:
 
     DeferredBlock* head_ = nullptr;
     std::size_t size_ = 0;
+    std::size_t swept_size_ = 0;  // size_ after the last sweep
 };
 
 }  // namespace gpdr::parallel

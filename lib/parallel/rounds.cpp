@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "mesh/pool.hpp"
+#include "parallel/freed_memory.hpp"
 #include "parallel/scheduler.hpp"
 #include "parallel/stopwatch.hpp"
 #include "parallel/worker.hpp"
@@ -160,6 +161,20 @@ private:
     bool quit_ = false;
 };
 
+// Between rounds: once the lanes have given back return_threshold bytes of
+// queue storage since the last time, the free memory goes back to the
+// system (freed_memory.hpp).  Whether and when that happens changes nothing
+// but the resident size.
+constexpr std::uint64_t return_threshold = std::uint64_t{32} << 20;
+
+void return_released_memory(std::vector<std::unique_ptr<Worker>>& lanes) {
+    std::uint64_t released = 0;
+    for (const auto& lane : lanes) released += lane->released_bytes;
+    if (released < return_threshold) return;
+    for (const auto& lane : lanes) lane->released_bytes = 0;
+    return_freed_memory();
+}
+
 }  // namespace
 
 void run_rounds(std::vector<std::unique_ptr<Worker>>& lanes, Scheduler& scheduler, unsigned threads,
@@ -208,6 +223,7 @@ void run_rounds(std::vector<std::unique_ptr<Worker>>& lanes, Scheduler& schedule
         }
         for (const auto& lane : lanes) stopped = stopped || lane->stopped;
         if (checked) check();
+        return_released_memory(lanes);
         report.master.managing += clock.lap();
         if (stopped || failure) break;
     }

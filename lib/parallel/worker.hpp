@@ -151,6 +151,9 @@ public:
     std::uint64_t handed_off_local = 0;
     std::uint64_t relation9_exceptions = 0;
     std::uint64_t zone_escapes = 0;
+    // Queue storage given back to the allocator since the master last
+    // looked (run_rounds returns it to the system once it adds up).
+    std::uint64_t released_bytes = 0;
     bool outgrew_root = false;
     bool stopped = false;
     mesh::Pool& pool() { return pool_; }
@@ -184,12 +187,11 @@ private:
     // triangles that died are dropped, the triangles now only one level
     // below a child (or that straddle two children) are counted, the
     // others listed in a child.
-    // Nothing looks at an entry before that: a listed triangle that dies
-    // costs its 8 bytes until a split reads it, or until refinement ends (at
-    // most 8 bytes per triangle ever made; the lists for the children keep
-    // dead entries longer, and the batch below keeps many out: the pipe's
-    // peak at -g4 is 873-875 MiB), and most of the final mesh is never
-    // counted.
+    // Nothing but a sweep looks at an entry before that: a listed triangle
+    // that dies costs its 8 bytes until a split reads the list, or until
+    // the run that ends with the list doubled since its last sweep drops it
+    // (sweep_deferred; the batch below keeps many out from the start), and
+    // most of the final mesh is never counted.
     // (On the pipe the hand-downs read 3.8 million entries and pass 11.7
     // million on unread.  One list per leaf, all of it read at a split,
     // read 22 million, and 95% of its live entries went on to a child's
@@ -231,6 +233,13 @@ private:
     bool alive(DeferredTriangle e) const {
         return mesh_.triangle(e.t).load_generation() == e.generation;
     }
+    // alive() and prefetch() as DeferredList::sweep asks them.
+    struct Liveness {
+        const Worker* worker;
+        bool operator()(DeferredTriangle e) const { return worker->alive(e); }
+        void ahead(DeferredTriangle e) const { worker->prefetch(e.t); }
+    };
+    Liveness liveness() const { return {this}; }
     // Asks for triangle t's slot ahead of reading it (deferred_list.hpp: look_ahead).
     void prefetch(mesh::TriangleId t) const { __builtin_prefetch(&mesh_.triangle(t)); }
     // The same for the points of e's corners, if e is alive (its corners are
@@ -256,6 +265,8 @@ private:
     bool refine_window(const Node& n, LeafState& state);
     void route_handed_off(LeafState& state);
     void split_balance_candidates(const std::vector<NodeId>& balance);
+    void release_idle_queues(LeafState& state);
+    void sweep_deferred(LeafState& state);
     int granularity_at(const Node& n) const;
     void split(NodeId leaf);
 

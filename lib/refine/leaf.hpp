@@ -370,9 +370,11 @@ public:
     bool idle() const { return poor_entries_ == 0 && subsegments_.empty(); }
 
     // Frees the queues' storage (a leaf that split and handed its work to
-    // its children keeps its node, but never queues anything again).  Any
-    // entries left are dropped.
-    void release() {
+    // its children keeps its node, but never queues anything again; an idle
+    // one grows them afresh if work comes).  Any entries left are dropped.
+    // Returns about how many bytes that gave back to the allocator.
+    std::size_t release() {
+        const std::size_t bytes = capacity_bytes();
         std::vector<std::unique_ptr<Level>>().swap(levels_);
         std::vector<std::uint64_t>().swap(heads_);
         std::vector<std::uint64_t>().swap(size_edge_heads_);
@@ -382,6 +384,7 @@ public:
         std::vector<QueuedSubsegment>().swap(subsegments_);
         std::vector<QueuedTriangle>().swap(handed_off_triangles);
         std::vector<QueuedSubsegment>().swap(handed_off_subsegments);
+        return bytes;
     }
 
     // Work that belongs to other leaves (parallel layer); always empty for a
@@ -390,6 +393,21 @@ public:
     std::vector<QueuedSubsegment> handed_off_subsegments;
 
 private:
+    // The storage release() frees.
+    std::size_t capacity_bytes() const {
+        const auto of = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+        std::size_t bytes = of(levels_) + of(heads_) + of(size_edge_heads_) + of(subsegments_) +
+                            of(handed_off_triangles) + of(handed_off_subsegments);
+        for (const auto& l : levels_) {
+            if (!l) continue;
+            bytes += sizeof(Level);
+            for (const Bin& b : l->bins) bytes += of(b.items);
+            if (l->size_edges)
+                for (const Bin& b : *l->size_edges) bytes += sizeof(Bin) + of(b.items);
+        }
+        return bytes;
+    }
+
     double side_squared_;
     double side_;
     static constexpr int row_shift = 4, column_shift = row_shift + where_levels;

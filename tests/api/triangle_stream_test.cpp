@@ -181,3 +181,37 @@ TEST_CASE("the arrays number the mesh as one pass in id order would", "[stream]"
         }
     }
 }
+
+// ArrayChoices::free_points_of: the mesh's points are given back as they are
+// copied, and the arrays are the ones a copy that keeps them makes (over
+// several granules of the point table, 131,072 points each).
+TEST_CASE("arrays that free the mesh's points as they copy them are the same", "[stream]") {
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> coordinate(0, 1);
+    std::vector<geometry::Point> points(300000);
+    for (auto& p : points) p = {coordinate(rng), coordinate(rng)};
+    triangulate::DelaunayReport report;
+    const mesh::Mesh kept = triangulate::delaunay(points, report);
+    mesh::Mesh freed = triangulate::delaunay(points, report);
+    NodeSet nodes;
+    nodes.markers.assign(points.size(), 0);
+    for (const auto& p : points) {
+        nodes.xy.push_back(p.x);
+        nodes.xy.push_back(p.y);
+    }
+    const std::vector<double> regions;
+    api::ArrayChoices choices;
+    choices.threads = 2;
+    const api::MeshArrays expected =
+        api::mesh_to_arrays(kept, nodes, points.size(), 0, regions, choices);
+    const std::size_t held = freed.vertex_store_bytes();
+    choices.free_points_of = &freed;
+    const api::MeshArrays arrays =
+        api::mesh_to_arrays(freed, nodes, points.size(), 0, regions, choices);
+    CHECK(arrays.nodes.xy == expected.nodes.xy);
+    CHECK(arrays.nodes.markers == expected.nodes.markers);
+    CHECK(in_order(api::triangle_source(arrays)).corners ==
+          in_order(api::triangle_source(expected)).corners);
+    // Every granule of points went back (the kinds stay).
+    CHECK(freed.vertex_store_bytes() + points.size() * sizeof(geometry::Point) <= held + 4096);
+}

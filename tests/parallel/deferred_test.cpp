@@ -1,5 +1,5 @@
 // The pieces the deferred counting rests on: the block lists of deferred
-// triangles (push, drain and take against a plain vector), the quadrant path a
+// triangles (push, drain, take and sweep against a plain vector), the quadrant path a
 // queue entry carries through splits (Leaf::where against the quadtree's own
 // child squares), the level a triangle is counted at (Quadtree::level_of
 // against long double arithmetic), the quadtree's division-free level test
@@ -139,6 +139,56 @@ TEST_CASE("a deferred list takes over another's entries", "[parallel][deferred]"
     CHECK(contents(into) == expected);
     from.push({mesh::TriangleId{1}, 0}, pool);
     CHECK(contents(from) == std::vector<std::uint32_t>{1});
+}
+
+// sweep() keeps exactly the entries its test calls alive, in the order a
+// drain reads them, shows every entry to `ahead`, and
+// gives the blocks it emptied back (the next pushes take them); a list
+// whose entries all died is left empty.  worth_sweeping() asks for a list
+// that has doubled since its last sweep.
+TEST_CASE("a deferred list sweeps out stale entries", "[parallel][deferred]") {
+    BlockPool pool;
+    DeferredList list;
+    const std::uint32_t n = 9 * DeferredBlock::capacity + 40;
+    for (std::uint32_t i = 0; i < n; ++i) list.push({mesh::TriangleId{i}, 0}, pool);
+    CHECK(list.worth_sweeping());
+    const auto drain_order = [&pool](DeferredList& l) {
+        std::vector<std::uint32_t> order;
+        l.drain([&](const DeferredTriangle& e) { order.push_back(mesh::index(e.t)); },
+                [](const DeferredTriangle&) {}, [](const DeferredTriangle&) {}, pool);
+        return order;
+    };
+    struct EveryThird {
+        std::vector<std::uint32_t>* shown;
+        bool operator()(const DeferredTriangle& e) const { return mesh::index(e.t) % 3 == 0; }
+        void ahead(const DeferredTriangle& e) const { shown->push_back(mesh::index(e.t)); }
+    };
+    // The order a drain would read them in, then the same list swept.
+    DeferredList copy;
+    for (std::uint32_t i = 0; i < n; ++i) copy.push({mesh::TriangleId{i}, 0}, pool);
+    std::vector<std::uint32_t> expected;
+    for (const std::uint32_t i : drain_order(copy))
+        if (i % 3 == 0) expected.push_back(i);
+    std::vector<std::uint32_t> shown;
+    list.sweep(EveryThird{&shown}, pool);
+    std::sort(shown.begin(), shown.end());
+    std::vector<std::uint32_t> all(n);
+    for (std::uint32_t i = 0; i < n; ++i) all[i] = i;
+    CHECK(shown == all);
+    CHECK(list.size() == expected.size());
+    CHECK_FALSE(list.worth_sweeping());
+    DeferredList swept;
+    swept.take(list);
+    CHECK(drain_order(swept) == expected);
+
+    // All dead: the list is empty and usable.
+    for (std::uint32_t i = 0; i < n; ++i) list.push({mesh::TriangleId{3 * i + 1}, 0}, pool);
+    std::vector<std::uint32_t> ignored;
+    list.sweep(EveryThird{&ignored}, pool);
+    CHECK(list.size() == 0);
+    CHECK(contents(list).empty());
+    list.push({mesh::TriangleId{6}, 0}, pool);
+    CHECK(contents(list) == std::vector<std::uint32_t>{6});
 }
 
 // The child a split picks from an entry's quadrant path is the child whose

@@ -8,6 +8,9 @@
 #include <array>
 #include <bit>
 #include <limits>
+#include <utility>
+
+#include "mesh/slices.hpp"
 
 namespace gpdr::triangulate {
 
@@ -99,17 +102,42 @@ std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y) {
     return d;
 }
 
-std::vector<std::uint32_t> brio_order(std::span<const geometry::Point> points, std::uint64_t seed) {
+std::vector<std::uint32_t> brio_order(std::span<const geometry::Point> points, std::uint64_t seed,
+                                      unsigned threads) {
     const std::size_t n = points.size();
     std::vector<std::uint32_t> order(n);
     if (n == 0) return order;
 
-    double min_x = std::numeric_limits<double>::infinity(), max_x = -min_x;
-    double min_y = min_x, max_y = max_x;
-    for (const auto& p : points) {
-        min_x = std::min(min_x, p.x), max_x = std::max(max_x, p.x);
-        min_y = std::min(min_y, p.y), max_y = std::max(max_y, p.y);
+    // On several threads the points are cut into pieces, each of which does
+    // in index order what one pass over all of them would do; the pieces'
+    // results are joined in piece order, so the order made does not depend
+    // on the threads.
+    const std::size_t pieces =
+        threads <= 1 ? 1 : std::min<std::size_t>(4 * threads, (n + 65535) / 65536);
+    const auto piece_range = [&](std::size_t k) {
+        return std::pair{k * n / pieces, (k + 1) * n / pieces};
+    };
+
+    struct Box {
+        double min_x = std::numeric_limits<double>::infinity(), max_x = -min_x;
+        double min_y = min_x, max_y = max_x;
+    };
+    std::vector<Box> boxes(pieces);
+    mesh::run_pieces(threads, pieces, [&](std::size_t k) {
+        Box& b = boxes[k];
+        const auto [first, last] = piece_range(k);
+        for (std::size_t i = first; i < last; ++i) {
+            const auto& p = points[i];
+            b.min_x = std::min(b.min_x, p.x), b.max_x = std::max(b.max_x, p.x);
+            b.min_y = std::min(b.min_y, p.y), b.max_y = std::max(b.max_y, p.y);
+        }
+    });
+    Box box;
+    for (const Box& b : boxes) {
+        box.min_x = std::min(box.min_x, b.min_x), box.max_x = std::max(box.max_x, b.max_x);
+        box.min_y = std::min(box.min_y, b.min_y), box.max_y = std::max(box.max_y, b.max_y);
     }
+    const double min_x = box.min_x, max_x = box.max_x, min_y = box.min_y, max_y = box.max_y;
     // Halved to keep the differences finite for any finite coordinates.
     const double span_x = max_x / 2 - min_x / 2, span_y = max_y / 2 - min_y / 2;
     const double scale_x = span_x > 0 ? 65535.0 / span_x : 0.0;
@@ -128,27 +156,57 @@ std::vector<std::uint32_t> brio_order(std::span<const geometry::Point> points, s
     };
 
     // Counting sort by round (highest round first), then the curve inside.
-    std::vector<std::size_t> start(static_cast<std::size_t>(rounds) + 2, 0);
+    // Each piece counts its points per round; a piece's points of round r go
+    // after those of the pieces before it.
+    const std::size_t round_count = static_cast<std::size_t>(rounds) + 1;
     std::vector<std::uint8_t> round(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        round[i] = static_cast<std::uint8_t>(rounds - round_of(i));
-        ++start[round[i] + 1u];
+    std::vector<std::vector<std::size_t>> next(pieces, std::vector<std::size_t>(round_count, 0));
+    mesh::run_pieces(threads, pieces, [&](std::size_t k) {
+        const auto [first, last] = piece_range(k);
+        for (std::size_t i = first; i < last; ++i) {
+            round[i] = static_cast<std::uint8_t>(rounds - round_of(i));
+            ++next[k][round[i]];
+        }
+    });
+    std::vector<std::size_t> start(round_count + 1, 0);
+    for (std::size_t r = 0; r < round_count; ++r) {
+        std::size_t at = start[r];
+        for (std::size_t k = 0; k < pieces; ++k) {
+            const std::size_t count = next[k][r];
+            next[k][r] = at;
+            at += count;
+        }
+        start[r + 1] = at;
     }
-    for (std::size_t r = 1; r < start.size(); ++r) start[r] += start[r - 1];
     std::vector<std::uint64_t> keys(n);
-    {
-        std::vector<std::size_t> next(start.begin(), start.end() - 1);
-        for (std::size_t i = 0; i < n; ++i) {
+    mesh::run_pieces(threads, pieces, [&](std::size_t k) {
+        const auto [first, last] = piece_range(k);
+        std::vector<std::size_t>& at = next[k];
+        for (std::size_t i = first; i < last; ++i) {
             const auto& p = points[i];
             const std::uint64_t h = hilbert_index(cell(p.x / 2 - min_x / 2, scale_x),
                                                   cell(p.y / 2 - min_y / 2, scale_y));
-            keys[next[round[i]]++] = (h << 32) | static_cast<std::uint64_t>(i);
+            keys[at[round[i]]++] = (h << 32) | static_cast<std::uint64_t>(i);
         }
+    });
+    // The rounds are sorted apart: on one thread with one scratch buffer,
+    // smallest first; on several, the largest (the last, half the points)
+    // first, so that the others share out beside it.
+    if (threads <= 1) {
+        std::vector<std::uint64_t> scratch;
+        for (std::size_t r = 0; r < round_count; ++r)
+            sort_by_curve(keys.data() + start[r], keys.data() + start[r + 1], scratch);
+    } else {
+        mesh::run_pieces(threads, round_count, [&](std::size_t j) {
+            const std::size_t r = round_count - 1 - j;
+            std::vector<std::uint64_t> scratch;
+            sort_by_curve(keys.data() + start[r], keys.data() + start[r + 1], scratch);
+        });
     }
-    std::vector<std::uint64_t> scratch;
-    for (std::size_t r = 0; r + 1 < start.size(); ++r)
-        sort_by_curve(keys.data() + start[r], keys.data() + start[r + 1], scratch);
-    for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<std::uint32_t>(keys[i]);
+    mesh::run_pieces(threads, pieces, [&](std::size_t k) {
+        const auto [first, last] = piece_range(k);
+        for (std::size_t i = first; i < last; ++i) order[i] = static_cast<std::uint32_t>(keys[i]);
+    });
     return order;
 }
 

@@ -21,8 +21,9 @@
 namespace gpdr::triangulate {
 
 // Indices 0..n-1 of `points` in insertion order.  Coordinates must be finite.
+// On `threads` threads, the same order.
 std::vector<std::uint32_t> brio_order(std::span<const geometry::Point> points,
-                                      std::uint64_t seed = 0);
+                                      std::uint64_t seed = 0, unsigned threads = 1);
 
 // Position of cell (x, y) of a 2^16 x 2^16 grid along the Hilbert curve.
 std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y);

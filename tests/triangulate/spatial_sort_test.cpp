@@ -80,3 +80,12 @@ TEST_CASE("the BRIO order is a reproducible permutation", "[triangulate][sort]")
         CHECK(brio_order(points, 1) != order);
     }
 }
+
+TEST_CASE("the BRIO order is the same on any number of threads", "[triangulate][sort]") {
+    const auto points = gpdr::mesh::testing::uniform_points(300'000, 5);
+    const auto order = brio_order(points);
+    for (unsigned threads : {2u, 3u, 8u}) {
+        INFO(threads << " threads");
+        CHECK(brio_order(points, 0, threads) == order);
+    }
+}

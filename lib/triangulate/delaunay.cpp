@@ -206,79 +206,38 @@ std::vector<double> band_cuts(const Mesh& mesh, std::size_t prefix, std::size_t 
     return cuts;
 }
 
-// Whether every edge between two real triangles is strictly locally
-// Delaunay (the fourth point strictly outside the circle): then the
-// triangulation is the only Delaunay one.  Exact; on `threads` threads.
-bool strictly_delaunay(const Mesh& mesh, unsigned threads) {
-    const std::uint32_t end = mesh.triangle_end();
-    constexpr std::uint32_t run = 1u << 16;
-    std::atomic<bool> strict{true};
-    // The neighbours and their far corners lie anywhere in memory: ask for
-    // them ahead (the neighbours' records `ahead` triangles early, the far
-    // corners half as early, once the records have arrived).
-    constexpr std::uint32_t ahead = 16;
-    const auto ask_neighbours = [&](std::uint32_t i) {
-        for (const EdgeRef e : mesh.triangle(TriangleId{i}).n)
-            __builtin_prefetch(&mesh.triangle(e.triangle()));
-    };
-    const auto ask_far = [&](std::uint32_t i) {
-        const Triangle& t = mesh.triangle(TriangleId{i});
-        if (!t.live()) return;
-        for (const EdgeRef e : t.n) {
-            const VertexId far = mesh.triangle(e.triangle()).v[e.edge()];
-            if (far != ghost_vertex) __builtin_prefetch(&mesh.point(far));
-        }
-    };
-    run_pieces(threads, (std::size_t{end} + run - 1) / run, [&](std::size_t piece) {
-        const auto first = static_cast<std::uint32_t>(piece * run);
-        const std::uint32_t last = std::min(end, first + run);
-        for (std::uint32_t i = first; i < last && strict.load(std::memory_order_relaxed); ++i) {
-            if (i + ahead < last) ask_neighbours(i + ahead);
-            if (i + ahead / 2 < last) ask_far(i + ahead / 2);
-            const Triangle& t = mesh.triangle(TriangleId{i});
-            if (!t.live() || t.is_ghost()) continue;
-            for (int k = 0; k < 3; ++k) {
-                const EdgeRef across = t.n[k];
-                if (index(across.triangle()) < i) continue;  // each edge once
-                const Triangle& u = mesh.triangle(across.triangle());
-                if (u.is_ghost()) continue;
-                const VertexId far = u.v[across.edge()];
-                if (geometry::incircle(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]),
-                                       mesh.point(far)) >= 0)
-                    strict.store(false, std::memory_order_relaxed);
-            }
-        }
-    });
-    return strict.load();
-}
-
-// insert_vertices on several threads: the first points (a thirty-second)
-// one at a time, then rounds that double the points inserted, each round
-// in bands (strip_inserter.hpp) and then the points the bands put off, one
-// at a time in order.  False when the result is not the only Delaunay
-// triangulation of the points (the caller starts again on one thread).
+// insert_vertices on several threads: the first points (a 128th) one at a
+// time, then rounds that double the points inserted, each round in bands
+// (strip_inserter.hpp) and then the points the bands put off, one at a time
+// in order.  Every insertion watches for edges whose two triangles share a
+// circle (PointInserter::watch_cocircular): false, as soon as one was made,
+// when the result might not be the only Delaunay triangulation of the
+// points (the caller starts again on one thread).
 bool insert_vertices_in_bands(Mesh& mesh, const std::vector<std::uint32_t>& order, std::size_t ib,
                               std::size_t ic, unsigned threads, KeptBy& kept_by) {
     constexpr std::uint32_t bands = 16;  // fixed: the mesh must not depend on `threads`
     const std::size_t n = order.size();
-    const std::size_t prefix = std::max({n / 32, ib + 1, ic + 1});
+    const std::size_t prefix = std::max({n / 128, ib + 1, ic + 1});
     std::uint32_t random_state = InsertBuffer{}.random_state;
     TriangleId hint;
     {
         Pool pool(mesh);
         hint = start_triangle(pool, ib, ic);
         PointInserter inserter(pool);
+        inserter.watch_cocircular();
         for (std::size_t i = 1; i < prefix; ++i) {
             if (i == ib || i == ic) continue;
             hint = insert_one(inserter, order, VertexId{static_cast<std::uint32_t>(i)}, hint,
                               random_state, kept_by);
         }
+        if (inserter.cocircular_seen()) return false;
     }
-    double y_low = mesh.point(VertexId{0}).y, y_high = y_low;
+    const Point first_point = mesh.point(VertexId{0});
+    StripInserter::Box box{first_point.x, first_point.x, first_point.y, first_point.y};
     for (std::size_t i = 0; i < n; ++i) {
-        const double y = mesh.point(VertexId{static_cast<std::uint32_t>(i)}).y;
-        y_low = std::min(y_low, y);
-        y_high = std::max(y_high, y);
+        const Point& p = mesh.point(VertexId{static_cast<std::uint32_t>(i)});
+        box = {std::min(box.x_low, p.x), std::max(box.x_high, p.x), std::min(box.y_low, p.y),
+               std::max(box.y_high, p.y)};
     }
     // The points put off gather along the cuts: a second set of bands, cut
     // half way between the first set's cuts, takes most of them on all
@@ -287,8 +246,8 @@ bool insert_vertices_in_bands(Mesh& mesh, const std::vector<std::uint32_t>& orde
     std::vector<double> between_cuts;
     for (std::size_t k = 0; k + 1 < cuts.size(); ++k)
         between_cuts.push_back(cuts[k] + (cuts[k + 1] - cuts[k]) / 2);
-    StripInserter in_bands(mesh, cuts, y_low, y_high, threads);
-    StripInserter in_between(mesh, between_cuts, y_low, y_high, threads);
+    StripInserter in_bands(mesh, cuts, box, threads);
+    StripInserter in_between(mesh, between_cuts, box, threads);
     std::vector<std::uint32_t> round;
     for (std::size_t first = prefix; first < n;) {
         const std::size_t last = std::min(n, 2 * first);
@@ -302,11 +261,15 @@ bool insert_vertices_in_bands(Mesh& mesh, const std::vector<std::uint32_t>& orde
         // (The pool whose lane was set last: the lanes' list of chunks is
         // the mesh's as of the last Lane::first.)
         PointInserter inserter(in_between.pool());
+        inserter.watch_cocircular();
         for (const std::uint32_t v : deferred)
             hint = insert_one(inserter, order, VertexId{v}, hint, random_state, kept_by);
+        if (inserter.cocircular_seen() || in_bands.cocircular_seen() ||
+            in_between.cocircular_seen())
+            return false;  // (as soon as seen: a grid stops in the first round)
         first = last;
     }
-    return strictly_delaunay(mesh, threads);
+    return true;
 }
 
 // From insertion order back to input numbering; the duplicates become
@@ -350,7 +313,7 @@ mesh::Mesh delaunay(std::span<const Point> points, DelaunayReport& report,
                     const DelaunayOptions& options) {
     report.duplicates.clear();
     check_points(points);
-    const std::vector<std::uint32_t> order = brio_order(points);
+    const std::vector<std::uint32_t> order = brio_order(points, 0, options.threads);
     const auto [ib, ic] = first_triangle(points, order);
 
     // Work on the points in insertion order: vertex id = position in

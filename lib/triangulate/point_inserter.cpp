@@ -22,21 +22,22 @@ bool strictly_between(const Point& a, const Point& b, const Point& p) {
     return (a.y < p.y && p.y < b.y) || (b.y < p.y && p.y < a.y);
 }
 
-// Does triangle t's circumcircle hold p strictly inside?  For a ghost, its
-// "circumcircle" is the open half-plane beyond its real edge plus the open
-// edge (mesh::in_circumcircle's rule, inlined here: it is asked for every
-// neighbour of the cavity).
-inline bool in_circumcircle(const Mesh& mesh, const Triangle& t, const Point& p) {
+// Where p lies against triangle t's circumcircle: > 0 strictly inside, 0 on
+// it, < 0 outside.  For a ghost, its "circumcircle" is the open half-plane
+// beyond its real edge plus the open edge (mesh::in_circumcircle's rule,
+// inlined here: it is asked for every neighbour of the cavity), and the
+// answer is 1 or -1, never 0: an edge with a ghost is no interior edge.
+inline double circle_side(const Mesh& mesh, const Triangle& t, const Point& p) {
     const VertexId a = t.v[0], b = t.v[1], c = t.v[2];
     if (a != ghost_vertex && b != ghost_vertex && c != ghost_vertex) [[likely]]
-        return geometry::incircle(mesh.point(a), mesh.point(b), mesh.point(c), p) > 0;
+        return geometry::incircle(mesh.point(a), mesh.point(b), mesh.point(c), p);
     // The real edge runs from the corner after the ghost to the one before.
     const VertexId from = a == ghost_vertex ? b : b == ghost_vertex ? c : a;
     const VertexId to = a == ghost_vertex ? c : b == ghost_vertex ? a : b;
     const Point& pf = mesh.point(from);
     const Point& pt = mesh.point(to);
     const double o = geometry::orient2d(pf, pt, p);
-    return o > 0 || (o == 0 && strictly_between(pf, pt, p));
+    return o > 0 || (o == 0 && strictly_between(pf, pt, p)) ? 1.0 : -1.0;
 }
 
 // Asks for the record of the triangle across e to be brought into the cache.
@@ -69,7 +70,8 @@ bool PointInserter::search(const Point& p, TriangleId seed) {
             const EdgeRef across = t.n[k];  // never none: the ghosts close the mesh
             Triangle& u = mesh_.triangle(across.triangle());
             if (u.marked()) continue;
-            if (in_circumcircle(mesh_, u, p)) {
+            const double side = circle_side(mesh_, u, p);
+            if (side > 0) {
                 if (Banded && !owns(u)) {
                     unmark_cavity();
                     return false;
@@ -87,7 +89,10 @@ bool PointInserter::search(const Point& p, TriangleId seed) {
                 unmark_cavity();
                 return false;
             }
-            boundary_.push_back({t.v[next3(k)], t.v[prev3(k)], across});
+            // p on the circle of a triangle that stays: the fan's triangle
+            // on this edge will share that circle with it.
+            if (side == 0 && watching_) cocircular_ = true;
+            boundary_.push_back({t.v[next3(k)], t.v[prev3(k)], across, t.v[k]});
         }
     }
     return true;
@@ -166,15 +171,39 @@ TriangleId PointInserter::fan(VertexId v) {
     return first;
 }
 
+// The edges from v to the ring's vertices: each is shared by the fan's
+// triangles on the boundary edges before and after it, (a, b, v) and
+// (b, c, v), which share a circle when c lies on the circle of (a, b, v),
+// that is when v lies on the circle of (a, b, c) (incircle changes sign
+// with the order of its last two points).  So not when (a, b, c) was a
+// triangle of the cavity: v lies strictly inside its circle.  (Edges with
+// the ghost vertex are no interior edges.)
+void PointInserter::watch_spokes(VertexId v) {
+    const std::size_t m = ring_.size();
+    const Point& pv = mesh_.point(v);
+    for (std::size_t i = 0; i < m; ++i) {
+        const BoundaryEdge& before = boundary_[ring_[i]];
+        const VertexId c = boundary_[ring_[i + 1 < m ? i + 1 : 0]].to;
+        if (before.apex == c || before.from == ghost_vertex || before.to == ghost_vertex ||
+            c == ghost_vertex)
+            continue;
+        if (geometry::incircle(mesh_.point(before.from), mesh_.point(before.to), pv,
+                               mesh_.point(c)) == 0)
+            cocircular_ = true;
+    }
+}
+
 TriangleId PointInserter::insert(VertexId v, TriangleId seed) {
     search<false>(mesh_.point(v), seed);
     chain();
+    if (watching_) watch_spokes(v);
     return fan(v);
 }
 
 TriangleId PointInserter::try_insert(VertexId v, TriangleId seed) {
     if (!search<true>(mesh_.point(v), seed)) return no_triangle;
     chain();
+    if (watching_) watch_spokes(v);
     return fan(v);
 }
 

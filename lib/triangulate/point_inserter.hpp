@@ -54,12 +54,26 @@ public:
     // nothing changes and the answer is no_triangle.  `seed` must be owned.
     mesh::TriangleId try_insert(mesh::VertexId v, mesh::TriangleId seed);
 
+    // From now on, insertions watch the edges they make: whether one of
+    // them has its two triangles on one circle (four cocircular vertices),
+    // where the Delaunay triangulation is not unique.  Every interior edge
+    // of a finished mesh was made, with the two triangles it has at the end,
+    // by the insertion that made the later of them: as an edge of its
+    // cavity's boundary (the search's own incircle against the triangle
+    // outside) or as a spoke of its fan (one incircle more).  So a mesh
+    // made only by watching insertions that saw none is the only Delaunay
+    // triangulation of its points.
+    void watch_cocircular() { watching_ = true; }
+    bool cocircular_seen() const { return cocircular_; }
+
 private:
-    // A cavity boundary edge, seen from inside: from -> to, and the edge of
-    // the triangle outside that faces it.
+    // A cavity boundary edge, seen from inside: from -> to, the edge of the
+    // triangle outside that faces it, and the third corner of the cavity
+    // triangle on it.
     struct BoundaryEdge {
         mesh::VertexId from, to;
         mesh::EdgeRef outer;
+        mesh::VertexId apex;
     };
 
     // Grows the cavity; with Banded, false (and no mark left) when it meets
@@ -68,6 +82,7 @@ private:
     bool search(const geometry::Point& p, mesh::TriangleId seed);
     void unmark_cavity();
     void chain();
+    void watch_spokes(mesh::VertexId v);
     mesh::TriangleId fan(mesh::VertexId v);
     [[noreturn]] void not_a_disk();
 
@@ -79,6 +94,8 @@ private:
     // (first vertex, index in boundary_), sorted: for chaining a large cavity.
     std::vector<std::pair<mesh::VertexId, std::uint32_t>> by_from_;
     double lo_ = 0, hi_ = 0;  // the band of try_insert
+    bool watching_ = false;
+    bool cocircular_ = false;
 };
 
 }  // namespace gpdr::triangulate

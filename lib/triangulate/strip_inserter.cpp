@@ -28,6 +28,9 @@ TriangleId walk_in_band(const Mesh& mesh, const PointInserter& inserter, Triangl
     TriangleId t = from;
     for (std::uint32_t step = 0;; ++step) {
         const Triangle& r = mesh.triangle(t);
+        // The next triangle is one of these, and the cavity search reads
+        // them: at millions of points they are mostly cache misses.
+        for (const EdgeRef e : r.n) __builtin_prefetch(&mesh.triangle(e.triangle()));
         const Point* corner[3] = {&mesh.point(r.v[0]), &mesh.point(r.v[1]), &mesh.point(r.v[2])};
         bool moved = false;
         for (int j = 0; j < 3 && !moved; ++j) {
@@ -52,21 +55,32 @@ struct StripInserter::Band {
     std::vector<std::uint32_t> deferred;  // in order
     TriangleId start = no_triangle;
     std::uint64_t inserted = 0;
+    bool cocircular = false;
 };
 
-StripInserter::StripInserter(Mesh& mesh, std::vector<double> cuts, double y_low, double y_high,
+StripInserter::StripInserter(Mesh& mesh, std::vector<double> cuts, const Box& box,
                              unsigned threads)
     : mesh_(mesh),
       cuts_(std::move(cuts)),
       threads_(std::max(1u, threads)),
       last_(cuts_.size() + 1, no_triangle),
-      y_low_(y_low),
-      y_scale_(y_high > y_low ? cells / (y_high - y_low) : 0),
-      anchors_((cuts_.size() + 1) * cells, no_triangle) {}
+      y_low_(box.y_low),
+      y_scale_(box.y_high > box.y_low ? rows / (box.y_high - box.y_low) : 0),
+      anchors_((cuts_.size() + 1) * cells, no_triangle) {
+    for (std::size_t s = 0; s <= cuts_.size(); ++s) {
+        const double low = s == 0 ? box.x_low : cuts_[s - 1];
+        const double high = s == cuts_.size() ? box.x_high : cuts_[s];
+        column_low_.push_back(low);
+        column_scale_.push_back(high > low ? columns / (high - low) : 0);
+    }
+}
 
-std::uint32_t StripInserter::cell(double y) const {
-    const double c = (y - y_low_) * y_scale_;
-    return c <= 0 ? 0 : c >= cells - 1 ? cells - 1 : static_cast<std::uint32_t>(c);
+std::uint32_t StripInserter::cell(std::uint32_t band, const Point& p) const {
+    const auto clamp = [](double c, std::uint32_t count) {
+        return c <= 0 ? 0u : c >= count - 1 ? count - 1 : static_cast<std::uint32_t>(c);
+    };
+    return clamp((p.y - y_low_) * y_scale_, rows) * columns +
+           clamp((p.x - column_low_[band]) * column_scale_[band], columns);
 }
 
 StripInserter::~StripInserter() {
@@ -86,6 +100,7 @@ std::vector<std::uint32_t> StripInserter::insert_round(std::span<const std::uint
                [&](std::size_t s) { run_band(band[s], static_cast<std::uint32_t>(s)); });
     for (Band& b : band) {
         inserted_ += b.inserted;
+        cocircular_ = cocircular_ || b.cocircular;
         deferred.insert(deferred.end(), b.deferred.begin(), b.deferred.end());
     }
     order_for_walks(deferred);
@@ -106,19 +121,46 @@ void StripInserter::set_lanes(std::uint32_t bands) {
 }
 
 // Each point to its band, in order; returns the points on a cut, which
-// belong to none.
+// belong to none.  On the threads by pieces: each piece counts its points
+// per band, then writes them after the pieces before it.
 std::vector<std::uint32_t> StripInserter::sort_into_bands(std::span<const std::uint32_t> vertices,
                                                           std::vector<Band>& band) const {
+    const std::size_t n = vertices.size();
+    const auto bands = static_cast<std::uint32_t>(band.size());
+    const std::uint32_t on_cut = bands;  // the "band" of the points on a cut
+    const std::size_t pieces = std::max<std::size_t>(1, std::min<std::size_t>(4 * threads_, n >> 16));
+    const auto piece_range = [&](std::size_t k) {
+        return std::pair{k * n / pieces, (k + 1) * n / pieces};
+    };
+    std::vector<std::uint8_t> where(n);
+    std::vector<std::vector<std::size_t>> next(pieces, std::vector<std::size_t>(bands + 1, 0));
+    run_pieces(threads_, pieces, [&](std::size_t k) {
+        const auto [first, last] = piece_range(k);
+        for (std::size_t i = first; i < last; ++i) {
+            const double x = mesh_.point(VertexId{vertices[i]}).x;
+            const auto s = static_cast<std::uint32_t>(
+                std::upper_bound(cuts_.begin(), cuts_.end(), x) - cuts_.begin());
+            where[i] = static_cast<std::uint8_t>(s > 0 && cuts_[s - 1] == x ? on_cut : s);
+            ++next[k][where[i]];
+        }
+    });
     std::vector<std::uint32_t> on_cuts;
-    for (const std::uint32_t v : vertices) {
-        const double x = mesh_.point(VertexId{v}).x;
-        const auto s = static_cast<std::uint32_t>(std::upper_bound(cuts_.begin(), cuts_.end(), x) -
-                                                  cuts_.begin());
-        if (s > 0 && cuts_[s - 1] == x)
-            on_cuts.push_back(v);
-        else
-            band[s].points.push_back(v);
+    for (std::uint32_t s = 0; s <= bands; ++s) {
+        std::size_t at = 0;
+        for (std::size_t k = 0; k < pieces; ++k) {
+            const std::size_t count = next[k][s];
+            next[k][s] = at;
+            at += count;
+        }
+        (s == on_cut ? on_cuts : band[s].points).resize(at);
     }
+    run_pieces(threads_, pieces, [&](std::size_t k) {
+        const auto [first, last] = piece_range(k);
+        for (std::size_t i = first; i < last; ++i) {
+            const std::uint32_t s = where[i];
+            (s == on_cut ? on_cuts : band[s].points)[next[k][s]++] = vertices[i];
+        }
+    });
     return on_cuts;
 }
 
@@ -197,12 +239,13 @@ TriangleId StripInserter::live_triangle(TriangleId hint) const {
 void StripInserter::run_band(Band& band, std::uint32_t s) {
     PointInserter inserter(*pools_[s]);
     limit_to_band(inserter, s);
+    inserter.watch_cocircular();
     TriangleId at = band.start;
     TriangleId* anchors = &anchors_[s * cells];
     for (const std::uint32_t v : band.points) {
         const VertexId id{v};
         const Point& p = mesh_.point(id);
-        TriangleId& anchor = anchors[cell(p.y)];
+        TriangleId& anchor = anchors[cell(s, p)];
         // The anchor's slot is this band's (made by it this round, or owned
         // when the round began): if it died, only this band reused it.
         TriangleId from = at;
@@ -223,6 +266,7 @@ void StripInserter::run_band(Band& band, std::uint32_t s) {
         ++band.inserted;
     }
     last_[s] = at;
+    band.cocircular = inserter.cocircular_seen();
 }
 
 }  // namespace gpdr::triangulate

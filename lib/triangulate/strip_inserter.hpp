@@ -27,8 +27,9 @@
 // Bowyer-Watson insertion of a point makes the Delaunay triangulation of
 // the points inserted so far whatever their order, so the parallel rounds
 // make the one sequential insertion makes wherever that triangulation is
-// unique (delaunay.cpp checks that it is, and otherwise starts again on
-// one thread).
+// unique.  Every insertion watches for edges whose two triangles share a
+// circle (PointInserter::watch_cocircular); where one was made, delaunay.cpp
+// starts again on one thread.
 
 #include <cstdint>
 #include <memory>
@@ -44,10 +45,12 @@ class PointInserter;
 
 class StripInserter {
 public:
-    // `cuts`: the x values between the bands, ascending (bands - 1 of them);
-    // the points' y lie in [y_low, y_high].
-    StripInserter(mesh::Mesh& mesh, std::vector<double> cuts, double y_low, double y_high,
-                  unsigned threads);
+    // The points' bounding box.
+    struct Box {
+        double x_low, x_high, y_low, y_high;
+    };
+    // `cuts`: the x values between the bands, ascending (bands - 1 of them).
+    StripInserter(mesh::Mesh& mesh, std::vector<double> cuts, const Box& box, unsigned threads);
     ~StripInserter();
     StripInserter(const StripInserter&) = delete;
     StripInserter& operator=(const StripInserter&) = delete;
@@ -67,6 +70,8 @@ public:
     mesh::TriangleId live_triangle(mesh::TriangleId hint) const;
 
     std::uint64_t inserted() const { return inserted_; }
+    // Whether an insertion of a round made an edge with cocircular triangles.
+    bool cocircular_seen() const { return cocircular_; }
 
 private:
     struct Band;
@@ -83,15 +88,19 @@ private:
     unsigned threads_;
     std::vector<std::unique_ptr<mesh::Pool>> pools_;
     std::vector<mesh::TriangleId> last_;  // each band's last triangle made
-    // Where a band's walks start: per band, a triangle it made last in each
-    // of `cells` slices of y.  A band's points come in curve order, which
-    // leaves a band and enters it again elsewhere, often along a cut, where
-    // a walk from the last point would run out of the band.
-    static constexpr std::uint32_t cells = 64;
+    // Where a band's walks start: per band, the triangle it made last in each
+    // cell of a grid of `rows` x `columns` over the band.  A band's points
+    // come in curve order, which leaves a cell and enters it again
+    // elsewhere, where a walk from the last point made would be long (or
+    // run out of the band).
+    static constexpr std::uint32_t rows = 128, columns = 16;
+    static constexpr std::uint32_t cells = rows * columns;
     double y_low_, y_scale_;
+    std::vector<double> column_low_, column_scale_;  // per band
     std::vector<mesh::TriangleId> anchors_;
-    std::uint32_t cell(double y) const;
+    std::uint32_t cell(std::uint32_t band, const geometry::Point& p) const;
     std::uint64_t inserted_ = 0;
+    bool cocircular_ = false;
 };
 
 }  // namespace gpdr::triangulate

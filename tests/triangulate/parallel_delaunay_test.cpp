@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -123,4 +124,27 @@ TEST_CASE("Delaunay in bands: duplicates keep the lowest index",
     for (std::size_t i = 50; i < n; i += 301) points[i - 40] = points[i];
     for (std::size_t i = 0; i < n; i += 997) points.push_back(points[i]);
     require_same_for_all_threads(points);
+}
+
+TEST_CASE("Delaunay in bands: a few empty cocircular squares fall back to one thread",
+          "[triangulate][delaunay][parallel]") {
+    // Tiny axis-aligned squares with exact corners among random points: each
+    // square's circle is empty, so its diagonal may go either way and only
+    // one thread's choice is kept.  The insertions must see it wherever the
+    // square's edges are made (a band, the points put off, the first points).
+    std::vector<Point> points = random_points(50'000, 17);
+    constexpr double side = 0x1p-24;
+    std::mt19937_64 random(19);
+    for (int k = 0; k < 6; ++k) {
+        const double x = std::ldexp(double(random() >> 44), -20);  // a multiple of 2^-20
+        const double y = std::ldexp(double(random() >> 44), -20);
+        for (const Point corner : {Point{x, y}, Point{x + side, y}, Point{x, y + side},
+                                   Point{x + side, y + side}})
+            points[random() % points.size()] = corner;
+    }
+    DelaunayReport one_report, two_report;
+    const Mesh one = triangulate_on(points, 1, one_report);
+    const Mesh two = triangulate_on(points, 2, two_report);
+    REQUIRE(check_mesh(two).empty());
+    REQUIRE(slots(two) == slots(one));
 }

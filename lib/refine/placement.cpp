@@ -15,20 +15,25 @@ using geometry::Point;
 
 PoorTriangle describe_poor_triangle(const mesh::Mesh& mesh, mesh::TriangleId id,
                                     const QualityTest& quality) {
-    PoorTriangle t;
-    t.mesh = &mesh;
-    t.id = id;
     const mesh::Triangle& r = mesh.triangle(id);
-    for (int k = 0; k < 3; ++k) t.corner[k] = mesh.point(r.v[k]);
-    t.circle = geometry::circumcircle(t.corner[0], t.corner[1], t.corner[2]);
-    const geometry::EdgeLength e = geometry::shortest_edge(t.corner[0], t.corner[1], t.corner[2]);
-    t.shortest_edge = e.edge;
-    t.shortest_length = std::sqrt(e.length_squared);
-    t.rho_bar = quality.rho_bar();
-    t.disk = {t.circle.centre,
-              std::sqrt(t.circle.radius_squared) - std::numbers::sqrt2 * t.shortest_length};
-    t.quality = &quality;
-    return t;
+    const Point a = mesh.point(r.v[0]), b = mesh.point(r.v[1]), c = mesh.point(r.v[2]);
+    const geometry::Circle circle = geometry::circumcircle(a, b, c);
+    const geometry::EdgeLength e = geometry::shortest_edge(a, b, c);
+    const double shortest_length = std::sqrt(e.length_squared);
+    // Every member given once (a default-initialised record would be
+    // cleared first: a block store per poor triangle taken).
+    return PoorTriangle{
+        .mesh = &mesh,
+        .id = id,
+        .corner = {a, b, c},
+        .circle = circle,
+        .shortest_edge = e.edge,
+        .shortest_length = shortest_length,
+        .rho_bar = quality.rho_bar(),
+        .disk = {circle.centre,
+                 std::sqrt(circle.radius_squared) - std::numbers::sqrt2 * shortest_length},
+        .quality = &quality,
+    };
 }
 
 Point CircumcentrePlacement::place(const PoorTriangle& t, PlacementScratch&) const {

@@ -9,8 +9,12 @@
 // The search marks the cavity triangles (Triangle::mark_bit) and lists them
 // in buffer.killed; the caller clears the marks (commit or abandon).
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <span>
+#include <utility>
+#include <vector>
 
 #include "mesh/insert.hpp"
 
@@ -20,23 +24,28 @@ namespace gpdr::mesh {
 // doubling as the queue: a neighbour joins when p lies strictly inside its
 // circumcircle and admit(id) allows it.  Never crosses a subsegment or the
 // hull.  Returns the number of boundary edges (each edge out of the cavity
-// counted once, from inside).
+// counted once, from inside), and lists them in buffer.found as they are
+// met.  (A triangle that fails the test never joins later: the test
+// depends only on it and p.  So the edges listed are exactly the boundary,
+// and the first one listed is where walk_cavity_boundary starts: the first
+// boundary edge of the first cavity triangle that has one.)
 template <class Admit>
 std::size_t search_cavity(Mesh& mesh, const Point& p, std::span<const TriangleId> seeds,
                           InsertBuffer& buffer, Admit&& admit) {
     auto& cavity = buffer.killed;
     cavity.clear();
+    auto& found = buffer.found;
+    found.clear();
     for (const TriangleId seed : seeds) {
         mesh.triangle(seed).flags |= Triangle::mark_bit;
         cavity.push_back(seed);
     }
-    std::size_t boundary_edges = 0;
     for (std::size_t i = 0; i < cavity.size(); ++i) {
         const Triangle& t = mesh.triangle(cavity[i]);
         for (int k = 0; k < 3; ++k) {
             const EdgeRef across = t.n[k];
             if (across.is_none() || t.is_subsegment(k)) {
-                ++boundary_edges;
+                found.push_back({t.v[next3(k)], t.v[prev3(k)], across, t.is_subsegment(k)});
                 continue;
             }
             Triangle& u = mesh.triangle(across.triangle());
@@ -44,12 +53,53 @@ std::size_t search_cavity(Mesh& mesh, const Point& p, std::span<const TriangleId
             if (admit(across.triangle()) && in_circumcircle(mesh, u, p)) {
                 u.flags |= Triangle::mark_bit;
                 cavity.push_back(across.triangle());
+                // Its other neighbours are tested when the queue reaches
+                // it: start fetching them now.
+                __builtin_prefetch(&mesh.triangle(u.n[next3(across.edge())].triangle()));
+                __builtin_prefetch(&mesh.triangle(u.n[prev3(across.edge())].triangle()));
             } else {
-                ++boundary_edges;
+                found.push_back({t.v[next3(k)], t.v[prev3(k)], across, false});
             }
         }
     }
-    return boundary_edges;
+    return found.size();
+}
+
+// Puts boundary edges (anything with `from` and `to`) head to tail: `ring`
+// gets their indices counter-clockwise round the cavity from edges[0].
+// False when they do not close into one loop through every edge exactly
+// once (the cavity is not a disk: a vertex starts two edges, or the edges
+// form more than one loop).  The edge that starts where one ends is found
+// by a scan of the few edges (a cavity has six on average), or, in a large
+// cavity, by binary search in a copy sorted by first vertex (`by_from`).
+template <class Edge>
+bool chain_boundary(std::span<const Edge> edges, std::vector<std::uint32_t>& ring,
+                    std::vector<std::pair<VertexId, std::uint32_t>>& by_from) {
+    const std::size_t m = edges.size();
+    constexpr std::size_t scanned = 32;
+    if (m > scanned) {
+        by_from.clear();
+        for (std::uint32_t at = 0; at < m; ++at) by_from.push_back({edges[at].from, at});
+        std::sort(by_from.begin(), by_from.end());
+    }
+    ring.clear();
+    std::uint32_t at = 0;
+    for (std::size_t i = 0; i < m; ++i) {
+        if (i > 0 && at == 0) return false;
+        ring.push_back(at);
+        const VertexId to = edges[at].to;
+        if (m <= scanned) {
+            at = 0;
+            while (at < m && edges[at].from != to) ++at;
+        } else {
+            const auto it =
+                std::lower_bound(by_from.begin(), by_from.end(), std::pair{to, std::uint32_t{0}});
+            at = it != by_from.end() && it->first == to ? it->second
+                                                        : static_cast<std::uint32_t>(m);
+        }
+        if (at == m) return false;
+    }
+    return m > 0 && at == 0;
 }
 
 // Walks the boundary of the marked cavity in buffer.killed counter-clockwise

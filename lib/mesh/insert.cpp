@@ -13,13 +13,6 @@ namespace gpdr::mesh {
 
 namespace {
 
-// p collinear with a and b: is it strictly between them?  (Exact: only
-// coordinate comparisons.)
-bool strictly_between(const Point& a, const Point& b, const Point& p) {
-    if (a.x != b.x) return (a.x < p.x && p.x < b.x) || (b.x < p.x && p.x < a.x);
-    return (a.y < p.y && p.y < b.y) || (b.y < p.y && p.y < a.y);
-}
-
 // The refusals of step 2, or nothing when p can be inserted.
 std::optional<InsertResult> refusal(const Mesh& mesh, const LocateResult& where) {
     const Triangle& t = mesh.triangle(where.triangle);
@@ -80,7 +73,6 @@ InsertResult commit_cavity(Pool& pool, VertexId v, const LocateResult& where, In
     auto& cavity = buf.killed;
     auto& boundary = buf.boundary;
     boundary.clear();
-    const std::size_t boundary_edges = buf.boundary_edges;
     const TriangleId seed = where.triangle;
 
     // A hull edge containing p stays out of the fan (only without ghosts).
@@ -89,14 +81,23 @@ InsertResult commit_cavity(Pool& pool, VertexId v, const LocateResult& where, In
         skip = EdgeRef(seed, where.index);
     std::size_t skip_at = 0;
 
-    // Step 4a: the boundary in order (cavity.hpp).
-    const bool disk = walk_cavity_boundary(mesh, buf, boundary_edges, [&](EdgeRef e) {
-        const Triangle& t = mesh.triangle(e.triangle());
-        if (e == skip) skip_at = boundary.size();
-        boundary.push_back(
-            {t.v[next3(e.edge())], t.v[prev3(e.edge())], t.n[e.edge()], t.is_subsegment(e.edge())});
-        return true;
-    });
+    // Step 4a: the boundary in order, the edges the search found chained
+    // head to tail (cavity.hpp).
+    const bool disk = chain_boundary(std::span<const InsertBuffer::BoundaryEdge>(buf.found),
+                                     buf.ring, buf.by_from);
+    if (disk) {
+        VertexId skip_from = no_vertex, skip_to = no_vertex;
+        if (!skip.is_none()) {
+            const Triangle& t = mesh.triangle(seed);
+            skip_from = t.v[next3(skip.edge())];
+            skip_to = t.v[prev3(skip.edge())];
+        }
+        for (const std::uint32_t at : buf.ring) {
+            const InsertBuffer::BoundaryEdge& e = buf.found[at];
+            if (e.from == skip_from && e.to == skip_to) skip_at = boundary.size();
+            boundary.push_back(e);
+        }
+    }
 
     if (!disk) {
         // The cavity is not a disk: the mesh was not (constrained) Delaunay
@@ -130,17 +131,6 @@ InsertResult bowyer_watson(Pool& pool, VertexId v, const LocateResult& where, In
 }
 
 }  // namespace
-
-bool in_circumcircle(const Mesh& mesh, const Triangle& t, const Point& p) {
-    const int g = t.corner_of(ghost_vertex);
-    if (g < 0)
-        return geometry::incircle(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]), p) >
-               0;
-    const Point& a = mesh.point(t.v[next3(g)]);
-    const Point& b = mesh.point(t.v[prev3(g)]);
-    const double o = geometry::orient2d(a, b, p);
-    return o > 0 || (o == 0 && strictly_between(a, b, p));
-}
 
 InsertResult insert_located(Pool& pool, VertexId v, const LocateResult& where,
                             InsertBuffer& buffer) {

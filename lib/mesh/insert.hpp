@@ -32,8 +32,10 @@
 // nothing once the buffer has grown to the largest cavity seen.
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
+#include "geometry/predicates.hpp"
 #include "mesh/locate.hpp"
 #include "mesh/pool.hpp"
 
@@ -81,6 +83,11 @@ struct InsertBuffer {
     };
     std::vector<BoundaryEdge> boundary;
     std::size_t boundary_edges = 0;  // of the cavity find_cavity() found
+    // Scratch: the boundary edges in the order the cavity search met them,
+    // and what chain_boundary (cavity.hpp) puts them in order with.
+    std::vector<BoundaryEdge> found;
+    std::vector<std::uint32_t> ring;
+    std::vector<std::pair<VertexId, std::uint32_t>> by_from;
 };
 
 // Inserts vertex v (already in the mesh store) at its point.
@@ -119,8 +126,25 @@ void save_tagged_and_destroy(Pool& pool, InsertBuffer& buffer);
 // the tag (before a flip changes t in place).
 void save_if_tagged(Triangle& t, InsertBuffer& buffer);
 
+// p collinear with a and b: is it strictly between them?  (Exact: only
+// coordinate comparisons.)
+inline bool strictly_between(const Point& a, const Point& b, const Point& p) {
+    if (a.x != b.x) return (a.x < p.x && p.x < b.x) || (b.x < p.x && p.x < a.x);
+    return (a.y < p.y && p.y < b.y) || (b.y < p.y && p.y < a.y);
+}
+
 // Whether p lies strictly inside the circumcircle of live triangle t (for a
 // ghost triangle: strictly beyond its edge, or inside the open edge).
-bool in_circumcircle(const Mesh& mesh, const Triangle& t, const Point& p);
+// Inline: the cavity search asks it of every triangle round a cavity.
+inline bool in_circumcircle(const Mesh& mesh, const Triangle& t, const Point& p) {
+    const int g = t.corner_of(ghost_vertex);
+    if (g < 0) [[likely]]
+        return geometry::incircle(mesh.point(t.v[0]), mesh.point(t.v[1]), mesh.point(t.v[2]), p) >
+               0;
+    const Point& a = mesh.point(t.v[next3(g)]);
+    const Point& b = mesh.point(t.v[prev3(g)]);
+    const double o = geometry::orient2d(a, b, p);
+    return o > 0 || (o == 0 && strictly_between(a, b, p));
+}
 
 }  // namespace gpdr::mesh

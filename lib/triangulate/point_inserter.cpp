@@ -7,6 +7,7 @@
 #include <gpdr/errors.hpp>
 
 #include "geometry/predicates.hpp"
+#include "mesh/cavity.hpp"
 
 namespace gpdr::triangulate {
 
@@ -14,13 +15,6 @@ using namespace gpdr::mesh;
 using geometry::Point;
 
 namespace {
-
-// p collinear with a and b: is it strictly between them?  (Exact: only
-// coordinate comparisons.)
-bool strictly_between(const Point& a, const Point& b, const Point& p) {
-    if (a.x != b.x) return (a.x < p.x && p.x < b.x) || (b.x < p.x && p.x < a.x);
-    return (a.y < p.y && p.y < b.y) || (b.y < p.y && p.y < a.y);
-}
 
 // Where p lies against triangle t's circumcircle: > 0 strictly inside, 0 on
 // it, < 0 outside.  For a ghost, its "circumcircle" is the open half-plane
@@ -104,38 +98,9 @@ void PointInserter::unmark_cavity() {
 }
 
 // ring_: the boundary edges head to tail, counter-clockwise round the cavity
-// from the first one found.  It closes after visiting every edge exactly
-// once unless the cavity is not a disk (then a vertex starts two edges, or
-// the edges form more than one loop).  The edge that starts where one ends
-// is found by a scan of the few edges (a cavity has six on average), or,
-// in a large cavity, by binary search in a copy sorted by first vertex.
+// from the first one found (mesh::chain_boundary).
 void PointInserter::chain() {
-    const std::size_t m = boundary_.size();
-    constexpr std::size_t scanned = 32;
-    const BoundaryEdge* edges = boundary_.data();
-    if (m > scanned) {
-        by_from_.clear();
-        for (std::uint32_t at = 0; at < m; ++at) by_from_.push_back({edges[at].from, at});
-        std::sort(by_from_.begin(), by_from_.end());
-    }
-    ring_.clear();
-    std::uint32_t at = 0;
-    for (std::size_t i = 0; i < m; ++i) {
-        if (i > 0 && at == 0) not_a_disk();
-        ring_.push_back(at);
-        const VertexId to = edges[at].to;
-        if (m <= scanned) {
-            at = 0;
-            while (at < m && edges[at].from != to) ++at;
-        } else {
-            const auto it =
-                std::lower_bound(by_from_.begin(), by_from_.end(), std::pair{to, std::uint32_t{0}});
-            at = it != by_from_.end() && it->first == to ? it->second
-                                                         : static_cast<std::uint32_t>(m);
-        }
-        if (at == m) not_a_disk();
-    }
-    if (at != 0) not_a_disk();
+    if (!chain_boundary(std::span<const BoundaryEdge>(boundary_), ring_, by_from_)) not_a_disk();
 }
 
 void PointInserter::not_a_disk() {

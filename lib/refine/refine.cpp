@@ -181,9 +181,17 @@ void LeafRefiner::classify(Leaf& leaf, TriangleId t, const TriangleMeasures& m) 
         if (leaf.owns(m.circle.centre)) {
             const PoorSlot at =
                 leaf.slot(m.circle.radius_squared, m.shortest.length_squared, kind(m));
-            if (holding_size_only_ && at.bin == Leaf::size_bin)
-                size_only_.push_back({q, at, m.shortest.length_squared});
-            else
+            if (holding_size_only_ && at.bin == Leaf::size_bin) {
+                // Member by member: a record built whole on the stack was
+                // copied with loads that straddle its smaller stores (a
+                // store-forwarding stall, a third of this function's time).
+                SizeOnly& e = size_only_.emplace_back();
+                e.q.id = q.id;
+                e.q.generation = q.generation;
+                e.q.where = q.where;
+                e.at = at;
+                e.shortest_squared = m.shortest.length_squared;
+            } else
                 leaf.push_poor(q, at);
         } else
             leaf.handed_off_triangles.push_back(q);

@@ -223,12 +223,8 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
     result.read_seconds = clock.lap();
 
     // The files are written from the arrays and the mesh's triangles and
-    // subsegments (write_outputs.cpp): never from its points, which are
-    // given back as they are copied.  (Not when no file is written: giving
-    // them back would only cost time.)
-    const bool free_points = api::writes_files(options, names, options.convex_hull);
-    Meshed m =
-        make_mesh(options, input, warn, plugins, false, free_points, result, clock, progress);
+    // subsegments (write_outputs.cpp): never from its points.
+    Meshed m = make_mesh(options, input, warn, plugins, false, true, result, clock, progress);
 
     api::OutputRequest request;
     request.options = &options;

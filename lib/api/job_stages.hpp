@@ -155,10 +155,6 @@ struct OutputRequest {
     Progress* progress = nullptr;    // the writing stage and the files done, if given
 };
 
-// Whether the switches ask for any file (write_hull_poly: as
-// OutputRequest's).
-bool writes_files(const Options& options, const FileNames& names, bool write_hull_poly);
-
 // Writes every file the switches ask for, all or none (an output
 // transaction), and returns their names in the order written.  -j and -o2
 // change `arrays`.

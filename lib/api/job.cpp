@@ -126,9 +126,23 @@ std::vector<std::string> check(const Options& options, int base,
 // triangles are materialised with `materialise`, else only when an output
 // derives from them.  With `free_points`, the mesh's points are given back
 // as they are copied (ArrayChoices::free_points_of): the caller reads only
-// the arrays from then on.  Takes the vertices out of `input`.
+// the arrays from then on.  With `counts_only`, no arrays: only the
+// counts.  Takes the vertices out of `input`.
 void to_arrays(const Options& options, api::Input& input, bool materialise, bool free_points,
-               Meshed& m, JobResult& result) {
+               bool counts_only, Meshed& m, JobResult& result) {
+    if (counts_only) {
+        // A run that writes no file and prints no statistics: the counts
+        // alone (numbering the vertices and triangles and copying the points
+        // would be a tenth of a -QNEP Delaunay run).
+        const api::MeshCounts counts = api::count_mesh(m.tri.mesh, result.input_vertices,
+                                                       parallel::thread_count(options.threads));
+        result.vertices = counts.nodes - m.tri.duplicates;
+        result.triangles = counts.triangles;
+        result.hull_edges = counts.hull_edges;
+        result.edges = (3 * result.triangles + result.hull_edges) / 2;
+        result.segments = m.tri.mesh.subsegments().size();
+        return;
+    }
     // Neighbours cost 12 bytes per triangle: only the outputs that are
     // derived from them get them.
     const bool neighbours = options.write_neighbours || options.write_edges ||
@@ -156,8 +170,8 @@ void to_arrays(const Options& options, api::Input& input, bool materialise, bool
 // to arrays, and -V's quality statistics; fills in `result`'s counts and the
 // stages' times.
 Meshed make_mesh(const Options& options, api::Input& input, const WarningSink& warn,
-                 const JobPlugins& plugins, bool materialise, bool free_points, JobResult& result,
-                 Stopwatch& clock, Progress* progress = nullptr) {
+                 const JobPlugins& plugins, bool materialise, bool free_points, bool counts_only,
+                 JobResult& result, Stopwatch& clock, Progress* progress = nullptr) {
     Meshed m;
     if (progress != nullptr) progress->enter(Progress::Stage::triangulating);
     // -C compares the mesh with the input as read, not as the stages saw it.
@@ -175,7 +189,7 @@ Meshed make_mesh(const Options& options, api::Input& input, const WarningSink& w
         result.checked = true;
         result.check_problems = check(options, input.nodes.base, *geometry, m.tri, m.refinement);
     }
-    to_arrays(options, input, materialise, free_points, m, result);
+    to_arrays(options, input, materialise, free_points, counts_only, m, result);
     if (options.verbosity > 0) {
         // Before -o2 changes the triangles; not counted as output time (as
         // in Triangle, whose "Output milliseconds" are the writing alone).
@@ -223,8 +237,12 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
     result.read_seconds = clock.lap();
 
     // The files are written from the arrays and the mesh's triangles and
-    // subsegments (write_outputs.cpp): never from its points.
-    Meshed m = make_mesh(options, input, warn, plugins, false, true, result, clock, progress);
+    // subsegments (write_outputs.cpp): never from its points.  A run that
+    // writes none (and without -V) needs no arrays at all.
+    const bool writes = api::writes_files(options, names, options.convex_hull);
+    const bool counts_only = !writes && options.verbosity == 0;
+    Meshed m =
+        make_mesh(options, input, warn, plugins, false, true, counts_only, result, clock, progress);
 
     api::OutputRequest request;
     request.options = &options;
@@ -236,7 +254,7 @@ JobResult run_job(const Options& given, const WarningSink& warn, const JobPlugin
     request.stamp = api::run_stamp(options.command.empty() ? "gpdr" : options.command,
                                    input.content_hash, result.vertices, result.triangles);
     // A mesh -C found wrong is not written: no file is made or replaced.
-    if (!result.checked || result.check_problems.empty())
+    if (writes && (!result.checked || result.check_problems.empty()))
         result.files_written = api::write_outputs(request, m.tri.mesh, m.arrays);
     result.write_seconds += clock.lap();
     if (progress != nullptr) progress->enter(Progress::Stage::finished);
@@ -258,7 +276,7 @@ MemoryJobResult run_job_in_memory(const Options& given, MeshInput input, const W
     result.input_vertices = in.nodes.data.size();
     result.read_seconds = clock.lap();
 
-    Meshed m = make_mesh(options, in, warn, plugins, true, false, result, clock);
+    Meshed m = make_mesh(options, in, warn, plugins, true, false, false, result, clock);
     out.mesh = api::output_in_memory(options, m.tri.mesh, m.arrays);
     result.write_seconds += clock.lap();
 

@@ -124,6 +124,16 @@ MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t inp
                           std::uint32_t attribute_count, std::span<const double> region_attributes,
                           const ArrayChoices& choices);
 
+// What mesh_to_arrays would count, without the arrays: the nodes (input
+// vertices, duplicates included, and the vertices added), the triangles and
+// the hull edges.  For a run that writes no file and prints no statistics.
+struct MeshCounts {
+    std::uint64_t nodes = 0;
+    std::uint64_t triangles = 0;
+    std::uint64_t hull_edges = 0;
+};
+MeshCounts count_mesh(const mesh::Mesh& mesh, std::size_t input_count, unsigned threads);
+
 // The marker of mesh edge {a, b} (Triangle's rules): a subsegment's own
 // marker if non-zero, else 1 on the boundary, else 0.
 EdgeMarker edge_markers(const mesh::Mesh& mesh);
@@ -154,6 +164,10 @@ struct OutputRequest {
     std::string stamp;               // the run stamp every file's last line carries
     Progress* progress = nullptr;    // the writing stage and the files done, if given
 };
+
+// Whether the switches ask for any file (write_hull_poly: as
+// OutputRequest's).
+bool writes_files(const Options& options, const FileNames& names, bool write_hull_poly);
 
 // Writes every file the switches ask for, all or none (an output
 // transaction), and returns their names in the order written.  -j and -o2

@@ -470,4 +470,47 @@ MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t inp
     return out;
 }
 
+MeshCounts count_mesh(const mesh::Mesh& mesh, std::size_t input_count, unsigned threads) {
+    // The nodes number_vertices would number, chunk by chunk as it does.
+    constexpr unsigned bits = VertexNumbers::bits;
+    const auto end =
+        static_cast<std::uint32_t>(std::max<std::size_t>(mesh.vertex_end(), input_count));
+    const std::size_t vertex_chunks = std::max<std::size_t>(
+        mesh.vertex_chunks_claimed(), (input_count + VertexNumbers::mask) >> bits);
+    std::vector<std::uint32_t> chunks;
+    for (std::uint32_t c = 0; c < vertex_chunks; ++c)
+        if (mesh.has_vertex_chunk(c) || (std::size_t{c} << bits) < input_count) chunks.push_back(c);
+    std::vector<std::uint64_t> nodes(chunks.size(), 0);
+    mesh::run_pieces(threads, chunks.size(), [&](std::size_t i) {
+        mesh::ChunkIds ids = mesh::chunk_ids(chunks[i], bits, end);
+        ids.last = std::min(ids.last, ids.first + mesh.vertex_chunk_used(chunks[i]));
+        std::uint64_t n = 0;
+        for (std::uint32_t v = ids.first; v < ids.last; ++v)
+            n += v < input_count || mesh.kind(mesh::VertexId{v}) != mesh::VertexKind::unused;
+        nodes[i] = n;
+    });
+    // The triangles and hull edges, as the walk that numbers the triangles
+    // finds them.
+    const std::vector<std::uint32_t> triangle_chunks = mesh::triangle_chunks(mesh);
+    const std::uint32_t triangle_end = mesh.triangle_end();
+    std::vector<MeshCounts> parts(triangle_chunks.size());
+    mesh::run_pieces(threads, triangle_chunks.size(), [&](std::size_t i) {
+        const mesh::ChunkIds ids =
+            mesh::chunk_ids(triangle_chunks[i], TriangleNumbers::bits, triangle_end);
+        mesh::for_each_triangle_in(mesh, ids.first, ids.last,
+                                   [&](mesh::TriangleId, const mesh::Triangle& t) {
+                                       ++parts[i].triangles;
+                                       for (const mesh::EdgeRef e : t.n)
+                                           parts[i].hull_edges += e.is_none() ? 1 : 0;
+                                   });
+    });
+    MeshCounts counts;
+    for (const std::uint64_t n : nodes) counts.nodes += n;
+    for (const MeshCounts& part : parts) {
+        counts.triangles += part.triangles;
+        counts.hull_edges += part.hull_edges;
+    }
+    return counts;
+}
+
 }  // namespace gpdr::api

@@ -6,9 +6,11 @@
 // the stage, and the .ele file of a large mesh alone costs more than the
 // .node beside it.
 
+#include <algorithm>
 #include <atomic>
 #include <exception>
 #include <functional>
+#include <iterator>
 #include <memory>
 #include <thread>
 #include <vector>
@@ -109,11 +111,22 @@ struct OutputContext {
 
 // One row of the output table: when the switches ask for the file, where it
 // goes, and how it is written.
+// Which files the switches ask for: the options, and whether an output
+// .poly is wanted (-p, or -c on a point set, and not -P).
+struct Wants {
+    const Options& options;
+    bool want_poly;
+};
+
 struct OutputFile {
-    bool (*wanted)(const OutputContext&);
+    bool (*wanted)(const Wants&);
     std::string FileNames::*path;
     void (*write)(io::OutputTransaction&, const std::string& path, const OutputContext&);
 };
+
+bool wants_poly(const Options& o, const FileNames& names, bool write_hull_poly) {
+    return (o.poly || write_hull_poly) && !o.no_poly_output && !names.out_poly.empty();
+}
 
 // Triangle's output .poly: the segments (and the input's holes and
 // regions), its vertices in the .node beside it.
@@ -142,45 +155,45 @@ io::WriteFormat without_markers(const io::WriteFormat& format) {
 // Every file gpdr writes, in the order they are written and renamed into
 // place (the largest first: they take longest to format).
 constexpr OutputFile output_files[] = {
-    {[](const OutputContext& c) { return !c.options.no_node_output; }, &FileNames::out_node,
+    {[](const Wants& c) { return !c.options.no_node_output; }, &FileNames::out_node,
      [](io::OutputTransaction& out, const std::string& path, const OutputContext& c) {
          io::write_node(out, path, c.arrays.nodes, c.format);
      }},
-    {[](const OutputContext& c) { return !c.options.no_ele_output; }, &FileNames::out_ele,
+    {[](const Wants& c) { return !c.options.no_ele_output; }, &FileNames::out_ele,
      [](io::OutputTransaction& out, const std::string& path, const OutputContext& c) {
          io::write_ele(out, path, triangle_source(c.arrays), c.format);
      }},
-    {[](const OutputContext& c) { return c.want_poly; }, &FileNames::out_poly, write_output_poly},
-    {[](const OutputContext& c) { return c.options.write_edges; }, &FileNames::out_edge,
+    {[](const Wants& c) { return c.want_poly; }, &FileNames::out_poly, write_output_poly},
+    {[](const Wants& c) { return c.options.write_edges; }, &FileNames::out_edge,
      [](io::OutputTransaction& out, const std::string& path, const OutputContext& c) {
          io::write_edge(out, path, c.prepared.edges, c.format);
      }},
-    {[](const OutputContext& c) { return c.options.write_voronoi; }, &FileNames::out_v_node,
+    {[](const Wants& c) { return c.options.write_voronoi; }, &FileNames::out_v_node,
      [](io::OutputTransaction& out, const std::string& path, const OutputContext& c) {
          io::write_node(out, path, c.prepared.voronoi.vertices, without_markers(c.format));
      }},
-    {[](const OutputContext& c) { return c.options.write_voronoi; }, &FileNames::out_v_edge,
+    {[](const Wants& c) { return c.options.write_voronoi; }, &FileNames::out_v_edge,
      [](io::OutputTransaction& out, const std::string& path, const OutputContext& c) {
          io::write_voronoi_edge(out, path, c.prepared.voronoi.edges, without_markers(c.format));
      }},
-    {[](const OutputContext& c) { return c.options.write_neighbours; }, &FileNames::out_neigh,
+    {[](const Wants& c) { return c.options.write_neighbours; }, &FileNames::out_neigh,
      [](io::OutputTransaction& out, const std::string& path, const OutputContext& c) {
          io::write_neigh(out, path, c.arrays.neighbours, c.format);
      }},
-    {[](const OutputContext& c) { return c.options.write_off; }, &FileNames::out_off,
+    {[](const Wants& c) { return c.options.write_off; }, &FileNames::out_off,
      [](io::OutputTransaction& out, const std::string& path, const OutputContext& c) {
          io::write_off(out, path, c.arrays.nodes, c.arrays.triangles, c.prepared.edge_count,
                        c.format);
      }},
-    {[](const OutputContext& c) { return c.options.write_vtk; }, &FileNames::out_vtu,
+    {[](const Wants& c) { return c.options.write_vtk; }, &FileNames::out_vtu,
      [](io::OutputTransaction& out, const std::string& path, const OutputContext& c) {
          io::write_vtu(out, path, c.exported, c.format);
      }},
-    {[](const OutputContext& c) { return c.options.write_gmsh; }, &FileNames::out_msh,
+    {[](const Wants& c) { return c.options.write_gmsh; }, &FileNames::out_msh,
      [](io::OutputTransaction& out, const std::string& path, const OutputContext& c) {
          io::write_msh(out, path, c.exported, c.format);
      }},
-    {[](const OutputContext& c) { return c.options.write_svg; }, &FileNames::out_svg,
+    {[](const Wants& c) { return c.options.write_svg; }, &FileNames::out_svg,
      [](io::OutputTransaction& out, const std::string& path, const OutputContext& c) {
          io::write_svg(out, path, c.exported, c.format);
      }},
@@ -202,6 +215,12 @@ io::MeshExport exported_mesh(const MeshArrays& arrays, const SegmentSet& segment
 
 }  // namespace
 
+bool writes_files(const Options& options, const FileNames& names, bool write_hull_poly) {
+    const Wants wants{options, wants_poly(options, names, write_hull_poly)};
+    return std::any_of(std::begin(output_files), std::end(output_files),
+                       [&](const OutputFile& file) { return file.wanted(wants); });
+}
+
 std::vector<std::string> write_outputs(const OutputRequest& request, const mesh::Mesh& mesh,
                                        MeshArrays& arrays) {
     const Options& o = *request.options;
@@ -212,8 +231,7 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
                                  o.command.empty() ? std::string("gpdr") : o.command, request.stamp,
                                  threads.threads() > 1 ? &threads : nullptr};
 
-    const bool want_poly =
-        (o.poly || request.write_hull_poly) && !o.no_poly_output && !names.out_poly.empty();
+    const bool want_poly = wants_poly(o, names, request.write_hull_poly);
     const PreparedOutputs prepared = prepare_outputs(o, mesh, arrays);
     static const SegmentSet no_segments;
     const SegmentSet& segments =
@@ -225,7 +243,7 @@ std::vector<std::string> write_outputs(const OutputRequest& request, const mesh:
 
     std::vector<FileJob> jobs;
     for (const OutputFile& file : output_files) {
-        if (!file.wanted(context)) continue;
+        if (!file.wanted(Wants{o, want_poly})) continue;
         const std::string& path = names.*file.path;
         jobs.push_back({path, [&context, &file, &path](io::OutputTransaction& out) {
                             file.write(out, path, context);

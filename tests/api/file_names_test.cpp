@@ -8,6 +8,9 @@
 
 #include <gpdr/errors.hpp>
 #include <gpdr/file_names.hpp>
+#include <gpdr/switches.hpp>
+
+#include "api/job_stages.hpp"
 
 using gpdr::Options;
 
@@ -152,4 +155,29 @@ TEST_CASE("apply_input_name turns the extension into switches", "[api][file_name
     Options none;
     CHECK_THROWS_AS(gpdr::apply_input_name(none), gpdr::UsageError);
     CHECK_THROWS_AS(gpdr::file_names(none), gpdr::UsageError);
+}
+
+TEST_CASE("whether a run writes any file", "[api][file_names]") {
+    struct Row {
+        std::string input, switches;
+        bool vtk, writes;
+    };
+    const std::vector<Row> rows = {
+        {"box.node", "", false, true},       {"box.node", "NEP", false, false},
+        {"box.poly", "pNE", false, true},    // the output .poly
+        {"box.poly", "pNEP", false, false},  {"box.node", "NEPc", false, false},
+        {"box.node", "NEPe", false, true},   {"box.node", "NEPn", false, true},
+        {"box.node", "NEPv", false, true},   {"box.node", "NEPg", false, true},
+        {"box.node", "NEP", true, true},
+    };
+    for (const Row& row : rows) {
+        INFO(row.input << " -" << row.switches << (row.vtk ? " --vtk" : ""));
+        Options options;
+        options.input = row.input;
+        if (!row.switches.empty()) gpdr::parse_switches(row.switches, options);
+        options.write_vtk = row.vtk;
+        gpdr::apply_input_name(options);
+        CHECK(gpdr::api::writes_files(options, gpdr::file_names(options), options.convex_hull) ==
+              row.writes);
+    }
 }

@@ -6,8 +6,13 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <gpdr/errors.hpp>
 #include <gpdr/io.hpp>
@@ -133,4 +138,63 @@ TEST_CASE("in memory, the input is checked as a file would be", "[memory_job]") 
         CHECK(r.mesh.triangles.size() == 1);
         CHECK(r.mesh.segments.endpoints.empty());
     }
+}
+
+TEST_CASE("a run that writes nothing counts the mesh as one that writes it", "[memory_job]") {
+    // -NEP without -V: only the counts are taken (api::count_mesh), never the
+    // arrays; with -V the arrays are made.  The counts must agree: the pipe
+    // refined, a point set with duplicate points (-c: hull segments), and
+    // one thread and two.
+    struct Case {
+        std::string file, switches;
+    };
+    const std::string data = std::string(GPDR_SOURCE_DIR);
+    const Case c = GENERATE_COPY(Case{"/poly-samples/pipe.poly", "pq30a40j1"},
+                                 Case{"/poly-samples/pipe.poly", "pq25j2"},
+                                 Case{"/poly-samples/points.node", "cj1"},
+                                 Case{"/poly-samples/points.node", "q30j2"});
+    CAPTURE(c.file, c.switches);
+    test::TempDir dir;
+    const fs::path input = dir / fs::path(c.file).filename();
+    fs::copy_file(data + c.file, input);
+    // Duplicates: a point set's first vertex again, as one more line.
+    if (input.extension() == ".node") {
+        std::ifstream in(input);
+        std::vector<std::string> lines;
+        for (std::string line; std::getline(in, line);) lines.push_back(line);
+        const auto data_line = [](const std::string& line) {
+            const std::size_t at = line.find_first_not_of(" \t");
+            return at != std::string::npos && line[at] != '#';
+        };
+        const auto header = std::find_if(lines.begin(), lines.end(), data_line);
+        const auto first = std::find_if(header + 1, lines.end(), data_line);
+        REQUIRE(first != lines.end());
+        std::istringstream header_fields(*header), first_fields(*first);
+        std::size_t count = 0, index = 0;
+        std::string header_rest, first_rest;
+        header_fields >> count;
+        std::getline(header_fields, header_rest);
+        first_fields >> index;
+        std::getline(first_fields, first_rest);
+        *header = std::to_string(count + 1) + header_rest;
+        lines.push_back(std::to_string(index + count) + first_rest);
+        std::ofstream out(input);
+        for (const std::string& line : lines) out << line << "\n";
+    }
+    Options counted = options_of(c.switches + "NEPQ");
+    counted.input = input.string();
+    Options arrays = options_of(c.switches + "NEPV");
+    arrays.input = input.string();
+    const JobResult a = run_job(counted, ignore_warning);
+    const JobResult b = run_job(arrays, ignore_warning);
+    CHECK(a.files_written.empty());
+    CHECK(b.files_written.empty());
+    CHECK(a.vertices == b.vertices);
+    CHECK(a.triangles == b.triangles);
+    CHECK(a.hull_edges == b.hull_edges);
+    CHECK(a.edges == b.edges);
+    CHECK(a.segments == b.segments);
+    CHECK(a.triangles > 0);
+    CHECK(std::distance(fs::directory_iterator(input.parent_path()), fs::directory_iterator()) ==
+          1);  // the input alone
 }

@@ -74,4 +74,16 @@ void run_pieces(unsigned threads, std::size_t pieces, const F& f) {
         if (e) std::rethrow_exception(e);
 }
 
+// Index ranges [0, n) cut into pieces of at least 65,536 (at most four a
+// thread; one on one thread): calls f(k, first, last) for piece k on up to
+// `threads` threads.  Returns the number of pieces.
+template <class F>
+std::size_t run_index_pieces(unsigned threads, std::size_t n, const F& f) {
+    const std::size_t pieces =
+        threads <= 1 ? 1 : std::clamp<std::size_t>(n >> 16, 1, 4 * std::size_t{threads});
+    run_pieces(threads, pieces,
+               [&](std::size_t k) { f(k, k * n / pieces, (k + 1) * n / pieces); });
+    return pieces;
+}
+
 }  // namespace gpdr::mesh

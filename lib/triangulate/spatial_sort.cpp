@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "mesh/slices.hpp"
+#include "mesh/sort_by_key.hpp"
 
 namespace gpdr::triangulate {
 
@@ -102,50 +103,61 @@ std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y) {
     return d;
 }
 
+namespace {
+
+// The points' bounding box, on `threads` threads by pieces.
+struct Box {
+    double min_x = std::numeric_limits<double>::infinity(), max_x = -min_x;
+    double min_y = min_x, max_y = max_x;
+    void add(const Box& b) {
+        min_x = std::min(min_x, b.min_x), max_x = std::max(max_x, b.max_x);
+        min_y = std::min(min_y, b.min_y), max_y = std::max(max_y, b.max_y);
+    }
+};
+Box bounding_box(std::span<const geometry::Point> points, unsigned threads) {
+    std::vector<Box> boxes(4 * std::size_t{threads});
+    const std::size_t pieces = mesh::run_index_pieces(
+        threads, points.size(), [&](std::size_t k, std::size_t first, std::size_t last) {
+            for (std::size_t i = first; i < last; ++i)
+                boxes[k].add({points[i].x, points[i].x, points[i].y, points[i].y});
+        });
+    Box box;
+    for (std::size_t k = 0; k < pieces; ++k) box.add(boxes[k]);
+    return box;
+}
+
+// A point's cell of the 2^16 x 2^16 grid over the box, for its curve key.
+class Grid {
+public:
+    explicit Grid(const Box& box)
+        : min_x_(box.min_x),
+          min_y_(box.min_y),
+          // Halved to keep the differences finite for any finite coordinates.
+          scale_x_(scale(box.max_x / 2 - box.min_x / 2)),
+          scale_y_(scale(box.max_y / 2 - box.min_y / 2)) {}
+    std::uint32_t curve_position(const geometry::Point& p) const {
+        return hilbert_index(cell(p.x / 2 - min_x_ / 2, scale_x_),
+                             cell(p.y / 2 - min_y_ / 2, scale_y_));
+    }
+
+private:
+    static double scale(double span) { return span > 0 ? 65535.0 / span : 0.0; }
+    static std::uint32_t cell(double offset, double scale) {
+        const double c = offset * scale;
+        return c <= 0 ? 0u : c >= 65535.0 ? 65535u : static_cast<std::uint32_t>(c);
+    }
+    double min_x_, min_y_, scale_x_, scale_y_;
+};
+
+}  // namespace
+
 std::vector<std::uint32_t> brio_order(std::span<const geometry::Point> points, std::uint64_t seed,
                                       unsigned threads) {
     const std::size_t n = points.size();
     std::vector<std::uint32_t> order(n);
     if (n == 0) return order;
-
-    // On several threads the points are cut into pieces, each of which does
-    // in index order what one pass over all of them would do; the pieces'
-    // results are joined in piece order, so the order made does not depend
-    // on the threads.
-    const std::size_t pieces =
-        threads <= 1 ? 1 : std::min<std::size_t>(4 * threads, (n + 65535) / 65536);
-    const auto piece_range = [&](std::size_t k) {
-        return std::pair{k * n / pieces, (k + 1) * n / pieces};
-    };
-
-    struct Box {
-        double min_x = std::numeric_limits<double>::infinity(), max_x = -min_x;
-        double min_y = min_x, max_y = max_x;
-    };
-    std::vector<Box> boxes(pieces);
-    mesh::run_pieces(threads, pieces, [&](std::size_t k) {
-        Box& b = boxes[k];
-        const auto [first, last] = piece_range(k);
-        for (std::size_t i = first; i < last; ++i) {
-            const auto& p = points[i];
-            b.min_x = std::min(b.min_x, p.x), b.max_x = std::max(b.max_x, p.x);
-            b.min_y = std::min(b.min_y, p.y), b.max_y = std::max(b.max_y, p.y);
-        }
-    });
-    Box box;
-    for (const Box& b : boxes) {
-        box.min_x = std::min(box.min_x, b.min_x), box.max_x = std::max(box.max_x, b.max_x);
-        box.min_y = std::min(box.min_y, b.min_y), box.max_y = std::max(box.max_y, b.max_y);
-    }
-    const double min_x = box.min_x, max_x = box.max_x, min_y = box.min_y, max_y = box.max_y;
-    // Halved to keep the differences finite for any finite coordinates.
-    const double span_x = max_x / 2 - min_x / 2, span_y = max_y / 2 - min_y / 2;
-    const double scale_x = span_x > 0 ? 65535.0 / span_x : 0.0;
-    const double scale_y = span_y > 0 ? 65535.0 / span_y : 0.0;
-    auto cell = [](double offset, double scale) {
-        const double c = offset * scale;
-        return c <= 0 ? 0u : c >= 65535.0 ? 65535u : static_cast<std::uint32_t>(c);
-    };
+    threads = std::max(1u, threads);
+    const Grid grid(bounding_box(points, threads));
 
     // Rounds: the first holds about 64 points (or all when n is small).
     int rounds = 0;
@@ -155,46 +167,22 @@ std::vector<std::uint32_t> brio_order(std::span<const geometry::Point> points, s
         return std::min(std::countr_zero(h | (1ull << 63)), rounds);
     };
 
-    // Counting sort by round (highest round first), then the curve inside.
-    // Each piece counts its points per round; a piece's points of round r go
-    // after those of the pieces before it.
-    const std::size_t round_count = static_cast<std::size_t>(rounds) + 1;
-    std::vector<std::uint8_t> round(n);
-    std::vector<std::vector<std::size_t>> next(pieces, std::vector<std::size_t>(round_count, 0));
-    mesh::run_pieces(threads, pieces, [&](std::size_t k) {
-        const auto [first, last] = piece_range(k);
-        for (std::size_t i = first; i < last; ++i) {
-            round[i] = static_cast<std::uint8_t>(rounds - round_of(i));
-            ++next[k][round[i]];
-        }
-    });
-    std::vector<std::size_t> start(round_count + 1, 0);
-    for (std::size_t r = 0; r < round_count; ++r) {
-        std::size_t at = start[r];
-        for (std::size_t k = 0; k < pieces; ++k) {
-            const std::size_t count = next[k][r];
-            next[k][r] = at;
-            at += count;
-        }
-        start[r + 1] = at;
-    }
+    // By round (highest round first), each point keyed by its curve
+    // position, then the curve inside each round.  (The same on any number
+    // of threads: mesh/sort_by_key.hpp.)
+    const auto round_count = static_cast<std::uint32_t>(rounds) + 1;
     std::vector<std::uint64_t> keys(n);
-    mesh::run_pieces(threads, pieces, [&](std::size_t k) {
-        const auto [first, last] = piece_range(k);
-        std::vector<std::size_t>& at = next[k];
-        for (std::size_t i = first; i < last; ++i) {
-            const auto& p = points[i];
-            const std::uint64_t h = hilbert_index(cell(p.x / 2 - min_x / 2, scale_x),
-                                                  cell(p.y / 2 - min_y / 2, scale_y));
-            keys[at[round[i]]++] = (h << 32) | static_cast<std::uint64_t>(i);
-        }
-    });
-    // The rounds are sorted apart: on one thread with one scratch buffer,
-    // smallest first; on several, the largest (the last, half the points)
-    // first, so that the others share out beside it.
-    if (threads <= 1) {
+    const std::vector<std::size_t> start = mesh::sort_by_key(
+        threads, n, round_count, [&](std::size_t i) { return rounds - round_of(i); },
+        [&](std::size_t i, std::size_t at) {
+            keys[at] = (std::uint64_t{grid.curve_position(points[i])} << 32) | i;
+        });
+    // On one thread with one scratch buffer, smallest round first; on
+    // several, the largest (the last, half the points) first, so that the
+    // others share out beside it.
+    if (threads == 1) {
         std::vector<std::uint64_t> scratch;
-        for (std::size_t r = 0; r < round_count; ++r)
+        for (std::uint32_t r = 0; r < round_count; ++r)
             sort_by_curve(keys.data() + start[r], keys.data() + start[r + 1], scratch);
     } else {
         mesh::run_pieces(threads, round_count, [&](std::size_t j) {
@@ -203,8 +191,7 @@ std::vector<std::uint32_t> brio_order(std::span<const geometry::Point> points, s
             sort_by_curve(keys.data() + start[r], keys.data() + start[r + 1], scratch);
         });
     }
-    mesh::run_pieces(threads, pieces, [&](std::size_t k) {
-        const auto [first, last] = piece_range(k);
+    mesh::run_index_pieces(threads, n, [&](std::size_t, std::size_t first, std::size_t last) {
         for (std::size_t i = first; i < last; ++i) order[i] = static_cast<std::uint32_t>(keys[i]);
     });
     return order;

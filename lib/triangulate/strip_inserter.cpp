@@ -8,6 +8,7 @@
 #include "geometry/predicates.hpp"
 #include "mesh/locate.hpp"
 #include "mesh/slices.hpp"
+#include "mesh/sort_by_key.hpp"
 #include "triangulate/point_inserter.hpp"
 
 namespace gpdr::triangulate {
@@ -51,7 +52,7 @@ TriangleId walk_in_band(const Mesh& mesh, const PointInserter& inserter, Triangl
 }  // namespace
 
 struct StripInserter::Band {
-    std::vector<std::uint32_t> points;    // this round's, in order
+    std::span<const std::uint32_t> points;  // this round's, in order
     std::vector<std::uint32_t> deferred;  // in order
     TriangleId start = no_triangle;
     std::uint64_t inserted = 0;
@@ -94,7 +95,8 @@ std::vector<std::uint32_t> StripInserter::insert_round(std::span<const std::uint
     const auto bands = static_cast<std::uint32_t>(cuts_.size() + 1);
     set_lanes(bands);
     std::vector<Band> band(bands);
-    std::vector<std::uint32_t> deferred = sort_into_bands(vertices, band);
+    std::vector<std::uint32_t> sorted;  // the bands' points
+    std::vector<std::uint32_t> deferred = sort_into_bands(vertices, sorted, band);
     find_starts(band, hint);
     run_pieces(threads_, bands,
                [&](std::size_t s) { run_band(band[s], static_cast<std::uint32_t>(s)); });
@@ -120,48 +122,28 @@ void StripInserter::set_lanes(std::uint32_t bands) {
     }
 }
 
-// Each point to its band, in order; returns the points on a cut, which
-// belong to none.  On the threads by pieces: each piece counts its points
-// per band, then writes them after the pieces before it.
+// Each point to its band, in order (mesh/sort_by_key.hpp): `sorted` holds
+// them band by band, each band's points a span of it.  Returns the points
+// on a cut, which belong to none.
 std::vector<std::uint32_t> StripInserter::sort_into_bands(std::span<const std::uint32_t> vertices,
+                                                          std::vector<std::uint32_t>& sorted,
                                                           std::vector<Band>& band) const {
-    const std::size_t n = vertices.size();
     const auto bands = static_cast<std::uint32_t>(band.size());
     const std::uint32_t on_cut = bands;  // the "band" of the points on a cut
-    const std::size_t pieces = std::max<std::size_t>(1, std::min<std::size_t>(4 * threads_, n >> 16));
-    const auto piece_range = [&](std::size_t k) {
-        return std::pair{k * n / pieces, (k + 1) * n / pieces};
-    };
-    std::vector<std::uint8_t> where(n);
-    std::vector<std::vector<std::size_t>> next(pieces, std::vector<std::size_t>(bands + 1, 0));
-    run_pieces(threads_, pieces, [&](std::size_t k) {
-        const auto [first, last] = piece_range(k);
-        for (std::size_t i = first; i < last; ++i) {
+    sorted.resize(vertices.size());
+    const std::vector<std::size_t> start = sort_by_key(
+        threads_, vertices.size(), bands + 1,
+        [&](std::size_t i) {
             const double x = mesh_.point(VertexId{vertices[i]}).x;
             const auto s = static_cast<std::uint32_t>(
                 std::upper_bound(cuts_.begin(), cuts_.end(), x) - cuts_.begin());
-            where[i] = static_cast<std::uint8_t>(s > 0 && cuts_[s - 1] == x ? on_cut : s);
-            ++next[k][where[i]];
-        }
-    });
-    std::vector<std::uint32_t> on_cuts;
-    for (std::uint32_t s = 0; s <= bands; ++s) {
-        std::size_t at = 0;
-        for (std::size_t k = 0; k < pieces; ++k) {
-            const std::size_t count = next[k][s];
-            next[k][s] = at;
-            at += count;
-        }
-        (s == on_cut ? on_cuts : band[s].points).resize(at);
-    }
-    run_pieces(threads_, pieces, [&](std::size_t k) {
-        const auto [first, last] = piece_range(k);
-        for (std::size_t i = first; i < last; ++i) {
-            const std::uint32_t s = where[i];
-            (s == on_cut ? on_cuts : band[s].points)[next[k][s]++] = vertices[i];
-        }
-    });
-    return on_cuts;
+            return s > 0 && cuts_[s - 1] == x ? on_cut : s;
+        },
+        [&](std::size_t i, std::size_t at) { sorted[at] = vertices[i]; });
+    const std::span<const std::uint32_t> all(sorted);
+    for (std::uint32_t s = 0; s < bands; ++s)
+        band[s].points = all.subspan(start[s], start[s + 1] - start[s]);
+    return {sorted.begin() + static_cast<std::ptrdiff_t>(start[on_cut]), sorted.end()};
 }
 
 void StripInserter::limit_to_band(PointInserter& inserter, std::uint32_t s) const {

@@ -77,6 +77,7 @@ private:
     struct Band;
     void set_lanes(std::uint32_t bands);
     std::vector<std::uint32_t> sort_into_bands(std::span<const std::uint32_t> vertices,
+                                               std::vector<std::uint32_t>& sorted,
                                                std::vector<Band>& band) const;
     void limit_to_band(PointInserter& inserter, std::uint32_t s) const;
     void find_starts(std::vector<Band>& band, mesh::TriangleId hint);

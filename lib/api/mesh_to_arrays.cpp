@@ -92,49 +92,87 @@ TriangleNumbers triangle_numbers(const mesh::Mesh& mesh) {
                            [&](std::uint32_t c) { return mesh.has_triangle_chunk(c); });
 }
 
-// Vertex numbers: the input vertices keep theirs (duplicates included, as
-// Triangle writes them); added vertices follow, in id order, skipping ids
-// claimed but never used.  Fills the coordinates in `nodes` and, unless it
-// is null, `mesh_ids`;
-// returns each mesh vertex's number (none for the skipped).  On `threads`
-// threads, a chunk of ids at a time: each chunk counts its vertices, then
-// numbers them from the count of the chunks before it, which gives the
-// numbers one pass in id order gives.
+// The vertex id chunks that have numbers (the claimed ones, and the
+// input's), each up to its used part (mesh.hpp; the numbers of the ids past
+// it are never read), and which ids are written as nodes: the input
+// vertices (duplicates included, as Triangle writes them) and the vertices
+// added, not the ids claimed but never used.
+struct VertexChunks {
+    const mesh::Mesh& mesh;
+    std::size_t input_count;
+    std::uint32_t end;
+    std::vector<std::uint32_t> chunks;
+
+    VertexChunks(const mesh::Mesh& m, std::size_t input)
+        : mesh(m),
+          input_count(input),
+          end(static_cast<std::uint32_t>(std::max<std::size_t>(m.vertex_end(), input))),
+          chunks(mesh::held_chunks(end, VertexNumbers::bits, [&](std::uint32_t c) {
+              return m.has_vertex_chunk(c) || (std::size_t{c} << VertexNumbers::bits) < input;
+          })) {}
+    mesh::ChunkIds ids_of(std::size_t i) const {
+        mesh::ChunkIds ids = mesh::chunk_ids(chunks[i], VertexNumbers::bits, end);
+        ids.last = std::min(ids.last, ids.first + mesh.vertex_chunk_used(chunks[i]));
+        return ids;
+    }
+    bool written(std::uint32_t v) const {
+        return v < input_count || mesh.kind(mesh::VertexId{v}) != mesh::VertexKind::unused;
+    }
+    // The nodes before each chunk (chunks.size() + 1 entries, the last the
+    // node count), on `threads` threads.
+    std::vector<std::uint32_t> nodes_before(unsigned threads) const {
+        std::vector<std::uint32_t> first(chunks.size() + 1, 0);
+        mesh::run_pieces(threads, chunks.size(), [&](std::size_t i) {
+            const mesh::ChunkIds ids = ids_of(i);
+            std::uint32_t n = 0;
+            for (std::uint32_t v = ids.first; v < ids.last; ++v) n += written(v) ? 1 : 0;
+            first[i + 1] = n;
+        });
+        for (std::size_t i = 0; i < chunks.size(); ++i) first[i + 1] += first[i];
+        return first;
+    }
+};
+
+// ArrayChoices::free_points_of: the coordinates in id order, appended to
+// storage reserved untouched, each granule of the point table given back
+// once copied, so that they are held about once, not twice, at any moment.
+void copy_freeing_points(const VertexChunks& vertices, std::size_t count, mesh::Mesh& mesh,
+                         NodeSet& nodes) {
+    std::vector<double>().swap(nodes.xy);
+    nodes.xy.reserve(2 * count);
+    for (std::size_t i = 0; i < vertices.chunks.size(); ++i) {
+        const mesh::ChunkIds ids = vertices.ids_of(i);
+        for (std::uint32_t v = ids.first; v < ids.last; ++v) {
+            if (!vertices.written(v)) continue;
+            const auto& p = mesh.point(mesh::VertexId{v});
+            nodes.xy.push_back(p.x);
+            nodes.xy.push_back(p.y);
+        }
+        mesh.discard_points_below(ids.last);
+    }
+    mesh.discard_points();
+}
+
+// Vertex numbers: the input vertices keep theirs; added vertices follow, in
+// id order (VertexChunks::written).  Fills the coordinates in `nodes` and,
+// unless it is null, `mesh_ids`; returns each mesh vertex's number (none for
+// the skipped).  On `threads` threads, a chunk of ids at a time: each chunk
+// counts its vertices, then numbers them from the count of the chunks
+// before it, which gives the numbers one pass in id order gives.
 VertexNumbers number_vertices(const mesh::Mesh& mesh, std::size_t input_count, NodeSet& nodes,
                               std::vector<std::uint32_t>* mesh_ids, unsigned threads,
                               mesh::Mesh* free_points) {
-    constexpr unsigned bits = VertexNumbers::bits;
-    const auto end =
-        static_cast<std::uint32_t>(std::max<std::size_t>(mesh.vertex_end(), input_count));
+    const VertexChunks vertices(mesh, input_count);
     VertexNumbers number = vertex_numbers(mesh, input_count);
-    const auto written = [&](std::uint32_t v) {
-        return v < input_count || mesh.kind(mesh::VertexId{v}) != mesh::VertexKind::unused;
-    };
-    const std::vector<std::uint32_t> chunks =
-        mesh::held_chunks(end, bits, [&number](std::uint32_t c) { return number.has_chunk(c); });
-    std::vector<std::uint32_t> first(chunks.size() + 1, 0);  // the numbers before each chunk
-    // Each chunk's ids up to its used part (mesh.hpp); the numbers of the
-    // ids past it are never read.
-    const auto ids_of = [&](std::size_t i) {
-        mesh::ChunkIds ids = mesh::chunk_ids(chunks[i], bits, end);
-        ids.last = std::min(ids.last, ids.first + mesh.vertex_chunk_used(chunks[i]));
-        return ids;
-    };
-    mesh::run_pieces(threads, chunks.size(), [&](std::size_t i) {
-        const mesh::ChunkIds ids = ids_of(i);
-        std::uint32_t n = 0;
-        for (std::uint32_t v = ids.first; v < ids.last; ++v) n += written(v) ? 1 : 0;
-        first[i + 1] = n;
-    });
-    for (std::size_t i = 0; i < chunks.size(); ++i) first[i + 1] += first[i];
+    const std::vector<std::uint32_t> first = vertices.nodes_before(threads);
     const bool copy_here = free_points == nullptr;
     if (copy_here) nodes.xy.resize(2 * std::size_t{first.back()});
     if (mesh_ids != nullptr) mesh_ids->resize(first.back());
-    mesh::run_pieces(threads, chunks.size(), [&](std::size_t i) {
-        const mesh::ChunkIds ids = ids_of(i);
+    mesh::run_pieces(threads, vertices.chunks.size(), [&](std::size_t i) {
+        const mesh::ChunkIds ids = vertices.ids_of(i);
         std::uint32_t n = first[i];
         for (std::uint32_t v = ids.first; v < ids.last; ++v) {
-            if (!written(v)) {
+            if (!vertices.written(v)) {
                 number[v] = none;
                 continue;
             }
@@ -148,24 +186,7 @@ VertexNumbers number_vertices(const mesh::Mesh& mesh, std::size_t input_count, N
             ++n;
         }
     });
-    if (!copy_here) {
-        // In id order, appended to storage reserved untouched, each granule
-        // of the point table given back once copied: the coordinates are
-        // held about once, not twice, at any moment.
-        std::vector<double>().swap(nodes.xy);
-        nodes.xy.reserve(2 * std::size_t{first.back()});
-        for (std::size_t i = 0; i < chunks.size(); ++i) {
-            const mesh::ChunkIds ids = ids_of(i);
-            for (std::uint32_t v = ids.first; v < ids.last; ++v) {
-                if (!written(v)) continue;
-                const auto& p = mesh.point(mesh::VertexId{v});
-                nodes.xy.push_back(p.x);
-                nodes.xy.push_back(p.y);
-            }
-            free_points->discard_points_below(ids.last);
-        }
-        free_points->discard_points();
-    }
+    if (!copy_here) copy_freeing_points(vertices, first.back(), *free_points, nodes);
     return number;
 }
 
@@ -471,24 +492,8 @@ MeshArrays mesh_to_arrays(const mesh::Mesh& mesh, NodeSet nodes, std::size_t inp
 }
 
 MeshCounts count_mesh(const mesh::Mesh& mesh, std::size_t input_count, unsigned threads) {
-    // The nodes number_vertices would number, chunk by chunk as it does.
-    constexpr unsigned bits = VertexNumbers::bits;
-    const auto end =
-        static_cast<std::uint32_t>(std::max<std::size_t>(mesh.vertex_end(), input_count));
-    const std::size_t vertex_chunks = std::max<std::size_t>(
-        mesh.vertex_chunks_claimed(), (input_count + VertexNumbers::mask) >> bits);
-    std::vector<std::uint32_t> chunks;
-    for (std::uint32_t c = 0; c < vertex_chunks; ++c)
-        if (mesh.has_vertex_chunk(c) || (std::size_t{c} << bits) < input_count) chunks.push_back(c);
-    std::vector<std::uint64_t> nodes(chunks.size(), 0);
-    mesh::run_pieces(threads, chunks.size(), [&](std::size_t i) {
-        mesh::ChunkIds ids = mesh::chunk_ids(chunks[i], bits, end);
-        ids.last = std::min(ids.last, ids.first + mesh.vertex_chunk_used(chunks[i]));
-        std::uint64_t n = 0;
-        for (std::uint32_t v = ids.first; v < ids.last; ++v)
-            n += v < input_count || mesh.kind(mesh::VertexId{v}) != mesh::VertexKind::unused;
-        nodes[i] = n;
-    });
+    MeshCounts counts;
+    counts.nodes = VertexChunks(mesh, input_count).nodes_before(threads).back();
     // The triangles and hull edges, as the walk that numbers the triangles
     // finds them.
     const std::vector<std::uint32_t> triangle_chunks = mesh::triangle_chunks(mesh);
@@ -504,8 +509,6 @@ MeshCounts count_mesh(const mesh::Mesh& mesh, std::size_t input_count, unsigned 
                                            parts[i].hull_edges += e.is_none() ? 1 : 0;
                                    });
     });
-    MeshCounts counts;
-    for (const std::uint64_t n : nodes) counts.nodes += n;
     for (const MeshCounts& part : parts) {
         counts.triangles += part.triangles;
         counts.hull_edges += part.hull_edges;

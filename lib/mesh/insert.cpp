@@ -44,8 +44,7 @@ void clear_marks(Mesh& mesh, const std::vector<TriangleId>& cavity) {
 
 // Step 3 (cavity.hpp).
 std::size_t find_cavity(Mesh& mesh, const Point& p, TriangleId seed, InsertBuffer& buf) {
-    buf.boundary_edges = search_cavity(mesh, p, {&seed, 1}, buf, [](TriangleId) { return true; });
-    return buf.boundary_edges;
+    return search_cavity(mesh, p, {&seed, 1}, buf, [](TriangleId) { return true; });
 }
 
 void save_if_tagged(Triangle& t, InsertBuffer& buf) {

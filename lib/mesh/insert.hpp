@@ -82,7 +82,6 @@ struct InsertBuffer {
         bool subsegment;
     };
     std::vector<BoundaryEdge> boundary;
-    std::size_t boundary_edges = 0;  // of the cavity find_cavity() found
     // Scratch: the boundary edges in the order the cavity search met them,
     // and what chain_boundary (cavity.hpp) puts them in order with.
     std::vector<BoundaryEdge> found;

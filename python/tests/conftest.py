@@ -29,7 +29,7 @@ def sample_path(name):
     raise FileNotFoundError(name)
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture(scope="package")
 def gpdr_exe():
     exe = os.environ.get("GPDR_EXE") or shutil.which("gpdr")
     if not exe or not os.path.exists(exe):

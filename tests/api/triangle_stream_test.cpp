@@ -38,13 +38,19 @@ Read in_order(io::EleSource source) {
     return r;
 }
 
+// n uniform random points in the unit square.
+std::vector<geometry::Point> random_points(std::size_t n, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> coordinate(0, 1);
+    std::vector<geometry::Point> points(n);
+    for (auto& p : points) p = {coordinate(rng), coordinate(rng)};
+    return points;
+}
+
 }  // namespace
 
 TEST_CASE("a streamed mesh's triangles are read in runs as in order", "[stream]") {
-    std::mt19937_64 rng(3);
-    std::uniform_real_distribution<double> coordinate(0, 1);
-    std::vector<geometry::Point> points(12000);
-    for (auto& p : points) p = {coordinate(rng), coordinate(rng)};
+    const std::vector<geometry::Point> points = random_points(12000, 3);
     triangulate::DelaunayReport report;
     const mesh::Mesh mesh = triangulate::delaunay(points, report);
     REQUIRE(mesh.count_triangles() < mesh.triangle_end());  // dead slots to skip
@@ -186,10 +192,7 @@ TEST_CASE("the arrays number the mesh as one pass in id order would", "[stream]"
 // copied, and the arrays are the ones a copy that keeps them makes (over
 // several granules of the point table, 131,072 points each).
 TEST_CASE("arrays that free the mesh's points as they copy them are the same", "[stream]") {
-    std::mt19937_64 rng(5);
-    std::uniform_real_distribution<double> coordinate(0, 1);
-    std::vector<geometry::Point> points(300000);
-    for (auto& p : points) p = {coordinate(rng), coordinate(rng)};
+    const std::vector<geometry::Point> points = random_points(300000, 5);
     triangulate::DelaunayReport report;
     const mesh::Mesh kept = triangulate::delaunay(points, report);
     mesh::Mesh freed = triangulate::delaunay(points, report);

@@ -91,8 +91,8 @@ NodeId Quadtree::cell(NodeId from, int level, std::uint32_t ix, std::uint32_t iy
     }
 }
 
-NodeId Quadtree::leaf_at(const Point& p) const {
-    NodeId id = root();
+NodeId Quadtree::leaf_below(NodeId from, const Point& p) const {
+    NodeId id = from;
     for (;;) {
         const Node& n = node(id);
         if (n.get_kind() != NodeKind::internal) return id;

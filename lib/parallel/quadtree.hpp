@@ -155,10 +155,31 @@ public:
     // an internal node).
     NodeId cell(NodeId from, int level, std::uint32_t ix, std::uint32_t iy, NodeAllocator* alloc,
                 NodeId& leaf);
+    // The nearest ancestor-or-self of node `from` whose square holds cell
+    // (level, ix, iy): where cell() may start instead of the root.
+    NodeId ancestor_holding(NodeId from, int level, std::uint32_t ix, std::uint32_t iy) const {
+        const Node* n = &node(from);
+        while (n->level > level || (ix >> (level - n->level)) != n->ix ||
+               (iy >> (level - n->level)) != n->iy) {
+            from = n->parent();
+            n = &node(from);
+        }
+        return from;
+    }
     // The child q of node id, made if missing.
     NodeId child(NodeId id, int q, NodeAllocator& alloc);
     // The leaf whose square holds p (p clamped into the root).
-    NodeId leaf_at(const Point& p) const;
+    NodeId leaf_at(const Point& p) const { return leaf_below(root(), p); }
+    // The same leaf, found from node `near` (most points asked for lie in
+    // it or beside it): the descent starts at near's nearest
+    // ancestor-or-self whose square holds p with the rounding margin to
+    // spare on every side, which the descent from the root passes through
+    // too (its comparisons with the split lines above that node cannot go
+    // the other way), so that the answer is leaf_at's, bit for bit.
+    NodeId leaf_at(const Point& p, NodeId near) const {
+        while (near != root() && !holds_with_margin(square(near), p)) near = node(near).parent();
+        return leaf_below(near, p);
+    }
 
     // Whether a triangle of circumradius² radius_squared is at least two
     // levels below a leaf of level leaf_level (level_of(radius_squared) >=
@@ -261,6 +282,14 @@ private:
     // Far above the rounding error of a cell coordinate (cell_x of a disk's
     // extreme x or y, computed from coordinates of the root's magnitude).
     double rounding_margin_;
+
+    bool holds_with_margin(const Square& s, const Point& p) const {
+        const double m = rounding_margin_;
+        return p.x >= s.x0 + m && p.x < s.x0 + s.side - m && p.y >= s.y0 + m &&
+               p.y < s.y0 + s.side - m;
+    }
+    // leaf_at's descent from `from`, which the descent from the root passes.
+    NodeId leaf_below(NodeId from, const Point& p) const;
     double sides_[max_level + 2];          // ℓ_k
     double inverse_sides_[max_level + 2];  // 1 / ℓ_k
     // 2^28 nodes at most (the graded pipe needs about 400 thousand): the

@@ -83,7 +83,9 @@ public:
     LaneThreads& operator=(const LaneThreads&) = delete;
 
     // Runs the round's lanes on every thread; returns when all are done.
-    void run(Round& round) {
+    // With `return_memory`, the calling thread first gives the free memory
+    // back (return_freed_memory) while the others start.
+    void run(Round& round, bool return_memory) {
         round.next_lane.store(0, std::memory_order_relaxed);
         const auto helpers = static_cast<unsigned>(threads_.size());
         // Only as many helpers as there are lanes beyond the master's.
@@ -102,6 +104,7 @@ public:
         // then finds the round full and sleeps again: the others would never
         // hear of the round.)
         if (wanted > 0) start_.notify_all();
+        if (return_memory) return_freed_memory();
         take_lanes(round, 0);
         if (wanted > 0) {
             const Stopwatch clock;
@@ -163,16 +166,18 @@ private:
 
 // Between rounds: once the lanes have given back return_threshold bytes of
 // queue storage since the last time, the free memory goes back to the
-// system (freed_memory.hpp).  Whether and when that happens changes nothing
-// but the resident size.
+// system (freed_memory.hpp), by the calling thread once the next round's
+// other threads are on their lanes: a trim takes 10-20 ms per run, which
+// they would otherwise wait for.  Whether and when that happens changes
+// nothing but the resident size.
 constexpr std::uint64_t return_threshold = std::uint64_t{32} << 20;
 
-void return_released_memory(std::vector<std::unique_ptr<Worker>>& lanes) {
+bool memory_to_return(std::vector<std::unique_ptr<Worker>>& lanes) {
     std::uint64_t released = 0;
     for (const auto& lane : lanes) released += lane->released_bytes;
-    if (released < return_threshold) return;
+    if (released < return_threshold) return false;
     for (const auto& lane : lanes) lane->released_bytes = 0;
-    return_freed_memory();
+    return true;
 }
 
 }  // namespace
@@ -185,6 +190,7 @@ void run_rounds(std::vector<std::unique_ptr<Worker>>& lanes, Scheduler& schedule
     LaneThreads pool(lanes, std::min(threads, lane_total) - 1, failure, report.workers);
     Round round;
     Stopwatch clock;
+    bool trim = false;
     for (;;) {
         clock.lap();
         scheduler.plan_round(round.leaves);
@@ -209,7 +215,7 @@ void run_rounds(std::vector<std::unique_ptr<Worker>>& lanes, Scheduler& schedule
         report.master.managing += clock.lap();
         if (record) record(round.leaves);  // (no one's time: the lap below drops it)
 
-        pool.run(round);
+        pool.run(round, trim);
 
         clock.lap();
         std::vector<std::uint64_t>& work = report.rounds.emplace_back(n);
@@ -223,7 +229,7 @@ void run_rounds(std::vector<std::unique_ptr<Worker>>& lanes, Scheduler& schedule
         }
         for (const auto& lane : lanes) stopped = stopped || lane->stopped;
         if (checked) check();
-        return_released_memory(lanes);
+        trim = memory_to_return(lanes);
         report.master.managing += clock.lap();
         if (stopped || failure) break;
     }

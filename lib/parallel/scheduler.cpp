@@ -41,8 +41,8 @@ void Scheduler::offer(NodeId leaf) {
     i.queued = true;
 }
 
-void Scheduler::deliver(const Routed& r) {
-    const NodeId x = tree_.leaf_at(r.at);
+void Scheduler::deliver(const Routed& r, NodeId near) {
+    const NodeId x = tree_.leaf_at(r.at, near);
     ++report_.handed_off_master;
     if (held(x)) {
         to_inbox(x, r);  // its zone is being refined: later
@@ -58,7 +58,7 @@ void Scheduler::flush_inbox(NodeId leaf) {
     std::vector<Routed> items;
     items.swap(info(leaf).inbox);
     for (const Routed& r : items) {
-        const NodeId x = tree_.leaf_at(r.at);  // the leaf may have split meanwhile
+        const NodeId x = tree_.leaf_at(r.at, leaf);  // the leaf may have split meanwhile
         if (held(x) && x != leaf) {
             to_inbox(x, r);
             continue;
@@ -105,7 +105,7 @@ bool Scheduler::touches_held(NodeId x) {
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
             if (i == 1 && j == 1) continue;
-            const NodeId n = tree_.leaf_at({xs[i], ys[j]});
+            const NodeId n = tree_.leaf_at({xs[i], ys[j]}, x);
             if (n != x && held(n)) return true;
         }
     return false;
@@ -186,7 +186,7 @@ void Scheduler::complete(int entry, bool split, const std::vector<NodeId>& balan
     }
     a.leaf = no_node;
     a.zone.clear();
-    for (const Routed& r : outbox) deliver(r);
+    for (const Routed& r : outbox) deliver(r, leaf);
     outbox.clear();
     if (outgrew_root) serial_ = true;
 }

@@ -87,8 +87,9 @@ public:
     // applies the splits, takes the work it routed out of its zone.
     void complete(int entry, bool split, const std::vector<NodeId>& balanced,
                   std::vector<Routed>& outbox, bool outgrew_root);
-    // Work for a leaf outside the sender's zone.
-    void deliver(const Routed& r);
+    // Work for a leaf outside the sender's zone; `near`, a node near its
+    // point (the sender's leaf), is where the search for its leaf starts.
+    void deliver(const Routed& r, NodeId near);
     // The buffer zone held for entry's leaf while the round runs (Schedule::record).
     const std::vector<NodeId>& zone(int entry) const { return active_[entry].zone; }
     bool serial() const { return serial_; }

@@ -86,14 +86,13 @@ void Worker::apply(CellRecord record, int delta, bool check_zone) {
         CachedCell& cached = cache_[(key * 0x9E3779B97F4A7C15ull) >> 56];
         NodeId id = cached.node, leaf = no_node;
         if (cached.key != key || (check_zone && checked_)) {
-            // Start at the leaf being refined when the cell is inside it
-            // (the common case: no walk from the root).
-            NodeId start = Quadtree::root();
-            if (current_ != no_node) {
-                const Node& c = tree_.node(current_);
-                const int shift = level - c.level;
-                if (shift >= 0 && (ix >> shift) == c.ix && (iy >> shift) == c.iy) start = current_;
-            }
+            // Start at the leaf being refined, or at its nearest ancestor
+            // that holds the cell: most counted cells are in the leaf or
+            // beside it, a level or two below a common ancestor, where a walk
+            // from the root would go down the whole tree.
+            const NodeId start = current_ == no_node
+                                     ? Quadtree::root()
+                                     : tree_.ancestor_holding(current_, level, ix, iy);
             id = tree_.cell(start, level, ix, iy, &nodes_, leaf);
             cached = {key, id};
         }
@@ -260,7 +259,7 @@ void Worker::deliver(const Routed& r, NodeId splitting) {
         const int q = (r.at.x >= s.x0 + half ? 1 : 0) | (r.at.y >= s.y0 + half ? 2 : 0);
         x = tree_.node(splitting).child(q);
     } else {
-        x = tree_.leaf_at(r.at);
+        x = tree_.leaf_at(r.at, current_ == no_node ? Quadtree::root() : current_);
     }
     Node& n = tree_.node(x);
     if (n.get_kind() != NodeKind::internal && n.state != nullptr &&

@@ -4,6 +4,7 @@
 #include "parallel/quadtree.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include <gpdr/errors.hpp>
@@ -60,15 +61,26 @@ NodeId Quadtree::allocate(NodeAllocator& alloc) {
 
 NodeId Quadtree::child(NodeId id, int q, NodeAllocator& alloc) {
     Node& n = node(id);
-    if (n.child_plus1[q] != 0) return n.child(q);
+    std::atomic_ref<std::uint32_t> slot(n.child_plus1[q]);
+    if (const std::uint32_t c = slot.load(std::memory_order_acquire); c != 0) return c - 1;
     const NodeId c = allocate(alloc);
     Node& m = node(c);
     m.level = static_cast<std::uint8_t>(n.level + 1);
     m.ix = n.ix * 2 + (q & 1);
     m.iy = n.iy * 2 + (q >> 1);
     m.parent_plus1 = id + 1;
-    n.child_plus1[q] = c + 1;
-    return c;
+    std::uint32_t made = 0;
+    if (slot.compare_exchange_strong(made, c + 1, std::memory_order_acq_rel,
+                                     std::memory_order_acquire))
+        return c;
+    // Another lane made it first: a shadow node below a leaf that two zones
+    // share, which both count in (scheduler.hpp, (d)).  Ours goes back
+    // unused, all zeros again, to be handed out next.
+    m.level = 0;
+    m.ix = m.iy = 0;
+    m.parent_plus1 = 0;
+    --alloc.next;
+    return made - 1;
 }
 
 NodeId Quadtree::cell(NodeId from, int level, std::uint32_t ix, std::uint32_t iy,
@@ -82,11 +94,15 @@ NodeId Quadtree::cell(NodeId from, int level, std::uint32_t ix, std::uint32_t iy
         if (n.level == level) return id;
         const int shift = level - n.level - 1;
         const int q = static_cast<int>(((ix >> shift) & 1u) | (((iy >> shift) & 1u) << 1));
-        if (n.child_plus1[q] == 0) {
+        // (Atomic: below a leaf two zones share, another lane may be making
+        // the child: see child.)
+        const std::uint32_t c =
+            std::atomic_ref<std::uint32_t>(n.child_plus1[q]).load(std::memory_order_acquire);
+        if (c == 0) {
             if (alloc == nullptr) return no_node;
             id = child(id, q, *alloc);
         } else {
-            id = n.child(q);
+            id = c - 1;
         }
     }
 }

@@ -59,6 +59,10 @@ enum class NodeKind : std::uint8_t { shadow = 0, leaf = 1, internal = 2 };
 
 struct LeafState;
 
+// Node::owner of a leaf that lies in the buffer zones of two or more leaves
+// of the round.
+inline constexpr std::int32_t shared_owner = -1;
+
 struct Node {
     // All-zero is an unused shadow node without children (the store is
     // zero-filled); ids are stored plus one so that 0 means "none".
@@ -68,7 +72,10 @@ struct Node {
     std::uint32_t parent_plus1;
     std::uint32_t child_plus1[4];
     std::atomic<std::int32_t> count;
-    std::atomic<std::int32_t> owner;  // worker + 1 whose buffer zone holds this leaf; 0: none
+    // While a round runs: entry + 1 of the one leaf of the round whose
+    // buffer zone holds this leaf, shared_owner when two or more zones hold
+    // it, 0 when none does (scheduler.hpp).
+    std::atomic<std::int32_t> owner;
     LeafState* state;                 // leaves: the refinement work
 
     NodeKind get_kind() const {

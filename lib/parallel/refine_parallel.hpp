@@ -3,8 +3,8 @@
 // sequential refiner (refine::refine_mesh), or parallel Delaunay refinement
 // in rounds (GPDR paper §3; rounds.hpp).  For rounds the mesh is overlaid by
 // a quadtree (quadtree.hpp); each round the calling thread picks leaves
-// whose buffer zones share no leaf (scheduler.hpp), and the threads refine
-// them side by side, each running the paper's Fig. 4 on its leaf
+// none of which lies in another's buffer zone (scheduler.hpp), and the
+// threads refine them side by side, each running the paper's Fig. 4 on its leaf
 // (refine::LeafRefiner, through Worker), updating the buckets and counters
 // of its zone and splitting the leaf while relation (9) allows.
 //

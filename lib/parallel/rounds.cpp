@@ -21,6 +21,7 @@ namespace {
 
 // What one leaf's run leaves for the master.
 struct RunResult {
+    const std::vector<NodeId>* zone = nullptr;  // Scheduler::zone, for the run
     std::vector<NodeId> balance;  // Scheduler::take_balance_candidates, for the run
     bool split = false;
     std::vector<NodeId> balanced;
@@ -47,7 +48,8 @@ void run_lane(Worker& lane, unsigned l, unsigned lanes, Round& round, std::mutex
         const std::uint64_t before = lane.report.triangles_created;
         try {
             result.split =
-                lane.run(round.leaves[i], static_cast<std::int32_t>(i + 1), result.balance);
+                lane.run(round.leaves[i], static_cast<std::int32_t>(i + 1), *result.zone,
+                         result.balance);
         } catch (...) {
             std::lock_guard lock(mutex);
             if (!failure) failure = std::current_exception();
@@ -191,14 +193,17 @@ void run_rounds(std::vector<std::unique_ptr<Worker>>& lanes, Scheduler& schedule
     Round round;
     Stopwatch clock;
     bool trim = false;
+    std::uint64_t last_work = 0;  // the round before's, every run's
     for (;;) {
         clock.lap();
         scheduler.plan_round(round.leaves);
         if (round.leaves.empty()) break;
         const std::size_t n = round.leaves.size();
         round.results.assign(n, RunResult{});
-        for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t i = 0; i < n; ++i) {
+            round.results[i].zone = &scheduler.zone(static_cast<int>(i));
             round.results[i].balance = scheduler.take_balance_candidates(static_cast<int>(i));
+        }
         round.lanes_used = static_cast<unsigned>(std::min<std::size_t>(n, lane_total));
         // The round's lanes claim ids above every id claimed so far, lane l
         // every lanes_used-th chunk from the l-th: a round of one leaf claims
@@ -211,6 +216,7 @@ void run_rounds(std::vector<std::unique_ptr<Worker>>& lanes, Scheduler& schedule
             mesh::Lane lane = base;
             lane.index = l;
             lanes[l]->pool().move_to_lane(lane);
+            lanes[l]->set_split_budget(round_split_budget(last_work));
         }
         report.master.managing += clock.lap();
         if (record) record(round.leaves);  // (no one's time: the lap below drops it)
@@ -227,6 +233,8 @@ void run_rounds(std::vector<std::unique_ptr<Worker>>& lanes, Scheduler& schedule
                                lane.outgrew_root);
             work[i] = r.work;
         }
+        last_work = 0;
+        for (const std::uint64_t w : work) last_work += w;
         for (const auto& lane : lanes) stopped = stopped || lane->stopped;
         if (checked) check();
         trim = memory_to_return(lanes);

@@ -69,46 +69,45 @@ void Scheduler::flush_inbox(NodeId leaf) {
 
 void Scheduler::hold(int entry, NodeId chosen) {
     if (checked_) {
-        // Exclusivity, checked independently of the held flags: the new zone
-        // against every zone of the round so far.
+        // The rule, checked independently of the hold counts: the new leaf
+        // in no zone of the round so far, and no leaf taken in its zone.
         for (const Active& a : active_) {
             if (a.leaf == no_node) continue;
-            for (NodeId z : zone_scratch_)
-                if (std::find(a.zone.begin(), a.zone.end(), z) != a.zone.end())
-                    report_.problems.push_back(
-                        fmt::format("buffer zones overlap: leaf {} handed out while leaf {} "
-                                    "(sharing leaf {}) is refined",
-                                    chosen, a.leaf, z));
+            if (std::find(a.zone.begin(), a.zone.end(), chosen) != a.zone.end() ||
+                std::find(zone_scratch_.begin(), zone_scratch_.end(), a.leaf) !=
+                    zone_scratch_.end())
+                report_.problems.push_back(
+                    fmt::format("buffer zones: leaf {} handed out beside leaf {}", chosen, a.leaf));
         }
     }
-    info(chosen).queued = false;
     Active& a = active_[entry];
     a.leaf = chosen;
     a.zone = zone_scratch_;
+    set_flag(chosen, taken_flag, true);
     for (NodeId z : a.zone) {
-        set_held(z, true);
-        tree_.node(z).owner.store(entry + 1, std::memory_order_relaxed);
+        hold_leaf(z);
         flush_inbox(z);
     }
-    a.balance.clear();
-    const int level = tree_.node(chosen).level;
-    for (NodeId z : a.zone)
-        if (tree_.node(z).level + 2 <= level) a.balance.push_back(z);
     ++report_.assignments;
 }
 
-bool Scheduler::touches_held(NodeId x) {
-    const Square s = tree_.square(x);
-    const double d = s.side * 0x1p-20;
-    const double xs[3] = {s.x0 - d, s.x0 + 0.5 * s.side, s.x0 + s.side + d};
-    const double ys[3] = {s.y0 - d, s.y0 + 0.5 * s.side, s.y0 + s.side + d};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-            if (i == 1 && j == 1) continue;
-            const NodeId n = tree_.leaf_at({xs[i], ys[j]}, x);
-            if (n != x && held(n)) return true;
+// Once the round is chosen: a zone's leaves that no other zone of the round
+// holds are the lane's alone (Node::owner is its tag), the others are
+// shared (shared_owner: the lanes route work for them through the calling
+// thread and leave their queues alone); the lane may split the exclusive
+// ones that are large and idle (take_balance_candidates).
+void Scheduler::mark_owners(std::size_t entries) {
+    for (std::size_t e = 0; e < entries; ++e) {
+        Active& a = active_[e];
+        a.balance.clear();
+        const int level = tree_.node(a.leaf).level;
+        for (NodeId z : a.zone) {
+            const bool exclusive = holds_[z] == 1;
+            tree_.node(z).owner.store(exclusive ? static_cast<std::int32_t>(e + 1) : shared_owner,
+                                      std::memory_order_relaxed);
+            if (exclusive && tree_.node(z).level + 2 <= level) a.balance.push_back(z);
         }
-    return false;
+    }
 }
 
 void Scheduler::plan_round(std::vector<NodeId>& round) {
@@ -135,15 +134,17 @@ void Scheduler::plan_round(std::vector<NodeId>& round) {
     for (const Candidate& c : candidates) {
         if (serial_ && !round.empty()) break;
         if (held(c.leaf)) continue;  // in a zone taken: offered again when it completes
-        if (touches_held(c.leaf)) continue;
-        const NodeId blocking =
-            tree_.zone_until(c.leaf, zone_scratch_, [&](NodeId z) { return held(z); });
-        if (blocking != no_node) continue;
+        // No leaf taken lies in its zone (BUF is symmetric: none can, once
+        // the leaf lies in no zone taken; the search stops if one did).
+        const NodeId taken = tree_.zone_until(c.leaf, zone_scratch_,
+                                              [&](NodeId z) { return flag(z, taken_flag); });
+        if (taken != no_node) continue;
         const int entry = static_cast<int>(round.size());
         if (active_.size() <= static_cast<std::size_t>(entry)) active_.resize(entry + 1);
         hold(entry, c.leaf);
         round.push_back(c.leaf);
     }
+    mark_owners(round.size());
     report_.most_concurrent =
         std::max(report_.most_concurrent, static_cast<unsigned>(round.size()));
     // The others wait for the next round.
@@ -171,11 +172,12 @@ void Scheduler::complete(int entry, bool split, const std::vector<NodeId>& balan
     if (split) publish_split(leaf);
     for (NodeId b : balanced) publish_split(b);
     report_.balance_splits += balanced.size();
+    set_flag(leaf, taken_flag, false);
+    for (NodeId z : a.zone) release_leaf(z);
+    // A leaf another zone of the round still holds is offered when that
+    // one completes.
     for (NodeId z : a.zone) {
-        set_held(z, false);
-        tree_.node(z).owner.store(0, std::memory_order_relaxed);
-    }
-    for (NodeId z : a.zone) {
+        if (held(z)) continue;
         flush_inbox(z);
         if (tree_.node(z).get_kind() == NodeKind::leaf) {
             offer(z);

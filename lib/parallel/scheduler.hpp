@@ -5,23 +5,28 @@
 //
 // Buffer zones.  BUF(L) = { L' != L : dist(L, L') < (ℓe(L) + ℓe(L'))/2 },
 // Z(L) = {L} ∪ BUF(L) (quadtree.hpp for ℓe; ℓe = ℓ while relation (9)
-// holds).  A leaf is handed out only when no leaf of its zone is held, i.e.
-// when Z(L) ∩ Z(M) = ∅ for every leaf M refined in the same round: the
-// paper's "no leaf in its buffer zone, nor in the buffer zones of those"
-// (BUF is symmetric).
+// holds), U(L) the open ℓe(L)/2-neighbourhood of L.  A leaf is handed out
+// only when it lies in no zone held, i.e. when M ∉ Z(L) for every leaf M
+// refined in the same round (BUF is symmetric).  The zones themselves may
+// share leaves, the leaves between L and M; the paper asks them to be
+// disjoint, which takes about twice as many rounds (two leaves of a uniform
+// grid run side by side when three apart, not two) for nothing the proof
+// below needs.
 //
 // Why that is enough (the invariants the workers rely on):
 //   (a) Reach.  For p in L, every triangle t in p's cavity has p inside its
 //       circumdisk, so the disk meets L and r(t) < ℓe(L)/4: all of the closed
-//       disk lies within 2r < ℓe(L)/2 of p.  So the cavity lies in U(L), the
-//       open ℓe(L)/2-neighbourhood of L, and so do the new triangles (they
-//       fill the cavity).  A triangle created larger than (9) allows (an
-//       "exception") still lies in U(L) as a point set, and a later cavity
-//       of the same worker can only reach it from inside U(L).
-//   (b) Disjointness.  A point x in U(L) ∩ U(M) lies in some leaf X with
-//       dist(L, X) < ℓe(L)/2 <= (ℓe(L) + ℓe(X))/2, so X ∈ Z(L), and
-//       likewise X ∈ Z(M): impossible when the zones are disjoint.  So two
-//       workers' cavities and new triangles never share a triangle.
+//       disk lies within 2r < ℓe(L)/2 of p.  So the cavity lies in U(L), and
+//       so do the new triangles (they fill the cavity).  A triangle created
+//       larger than (9) allows (an "exception") still lies in U(L) as a
+//       point set, and a later cavity of the same worker can only reach it
+//       from inside U(L).  Everything else a run reads of the mesh (the
+//       walk to p, the poor triangle, a subsegment's neighbours) meets U(L).
+//   (b) Disjointness.  A point x in U(L) ∩ U(M) would give dist(L, M) <=
+//       dist(L, x) + dist(x, M) < (ℓe(L) + ℓe(M))/2, so M ∈ Z(L).  So two
+//       workers' cavities and new triangles never share a triangle, and a
+//       triangle one of them reads (it meets U(L)) is never in the other's
+//       cavity.
 //   (c) Neighbour links.  A triangle next to L's cavity gets only the link
 //       across a cavity edge rewritten, and that edge lies in U(L).  Another
 //       worker reads the links of such a triangle only for its own cavity
@@ -30,9 +35,14 @@
 //   (d) Counters and buckets.  A triangle of circumradius r counted in cell
 //       C at level k (ℓ_k > 4r) whose disk contains p ∈ L lies within 2r of
 //       p; if C is at or below a leaf Y then ℓ(Y) >= ℓ_k > 4r, so
-//       dist(L, Y) < ℓ(Y)/2 and Y ∈ Z(L): a worker writes plain counts only
-//       in its own zone, and atomic ones in internal nodes.  Work for a leaf
-//       outside the zone goes through the master.
+//       dist(L, Y) < ℓ(Y)/2 and Y ∈ Z(L).  A worker so writes counts only in
+//       its zone and in internal nodes, all by atomic adds: a leaf that two
+//       zones share is counted by both (and the shadow nodes below it are
+//       made by whichever comes first, Quadtree::child), but its count is
+//       read by no run of the round, and L's own count by L's run alone (L
+//       lies in no other zone).  A leaf's queues are written by the run of
+//       the one zone that holds it (Node::owner); work for any other leaf,
+//       a shared one included, goes through the master.
 //   (e) Stale queue entries are recognised by the slot's generation alone,
 //       read atomically, before anything else of a slot that another worker
 //       may be reusing is read (mesh/triangle.hpp).
@@ -102,14 +112,9 @@ private:
         std::vector<NodeId> zone;
         std::vector<NodeId> balance;  // until take_balance_candidates
     };
-    // Whether a leaf touching x (beside one of its sides' midpoints or
-    // corners) is held: then x's zone holds it (their distance is 0).  A
-    // few descents of the tree, where the zone search costs about six times
-    // as many instructions; it settles most of the leaves a round passes
-    // over, and the zone search the rest.
-    bool touches_held(NodeId x);
     // Holds `chosen` under `entry`: its zone (zone_scratch_).
     void hold(int entry, NodeId chosen);
+    void mark_owners(std::size_t entries);
     // Publishes a split its lane made: children first, then the parent.
     void publish_split(NodeId leaf);
     Info& info(NodeId id) { return tree_.node(id).state->master; }
@@ -118,7 +123,7 @@ private:
     // holding or freeing a zone looks at every zone leaf's inbox, while the
     // states lie wherever their workers allocated them (a cache miss each).
     enum : std::uint8_t {
-        held_flag = 1,   // in a zone of the round
+        taken_flag = 1,  // refined in the round
         inbox_flag = 2,  // MasterInfo::inbox is not empty
     };
     bool flag(NodeId x, std::uint8_t f) const { return x < flags_.size() && (flags_[x] & f) != 0; }
@@ -126,8 +131,16 @@ private:
         if (x >= flags_.size()) flags_.resize(tree_.node_end());
         flags_[x] = static_cast<std::uint8_t>(on ? flags_[x] | f : flags_[x] & ~f);
     }
-    bool held(NodeId x) const { return flag(x, held_flag); }
-    void set_held(NodeId x, bool held) { set_flag(x, held_flag, held); }
+    // In how many zones of the round a leaf lies (a large leaf beside many
+    // small ones may lie in dozens).
+    bool held(NodeId x) const { return x < holds_.size() && holds_[x] != 0; }
+    void hold_leaf(NodeId x) {
+        if (x >= holds_.size()) holds_.resize(tree_.node_end());
+        ++holds_[x];
+    }
+    void release_leaf(NodeId x) {
+        if (--holds_[x] == 0) tree_.node(x).owner.store(0, std::memory_order_relaxed);
+    }
     void to_inbox(NodeId x, const Routed& r) {
         info(x).inbox.push_back(r);
         set_flag(x, inbox_flag, true);
@@ -146,7 +159,8 @@ private:
     // The leaves offered since the last round, each once (MasterInfo::queued).
     std::vector<NodeId> waiting_;
     std::vector<NodeId> zone_scratch_;
-    std::vector<std::uint8_t> flags_;  // by node id (flag())
+    std::vector<std::uint8_t> flags_;   // by node id (flag())
+    std::vector<std::uint32_t> holds_;  // by node id (held())
 };
 
 // Checked mode: the quadtree invariants on a quiescent mesh (no worker

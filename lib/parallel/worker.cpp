@@ -96,19 +96,23 @@ void Worker::apply(CellRecord record, int delta, bool check_zone) {
             id = tree_.cell(start, level, ix, iy, &nodes_, leaf);
             cached = {key, id};
         }
+        // An atomic add everywhere: a leaf that two zones of the round share
+        // is counted by both lanes (scheduler.hpp, (d)).
         Node& n = tree_.node(id);
+        n.count.fetch_add(delta, std::memory_order_relaxed);
         if (n.get_kind() == NodeKind::internal) {
             // Above a leaf: relation (9) does not hold there (quadtree.hpp).
-            n.count.fetch_add(delta, std::memory_order_relaxed);
             if (delta > 0) ++relation9_exceptions;
-        } else {
-            n.count.store(n.count.load(std::memory_order_relaxed) + delta,
-                          std::memory_order_relaxed);
-            if (leaf != no_node && check_zone && checked_ &&
-                tree_.node(leaf).owner.load(std::memory_order_relaxed) != tag_)
-                ++zone_escapes;
+        } else if (leaf != no_node && check_zone && checked_ && !in_zone(leaf)) {
+            ++zone_escapes;
         }
     });
+}
+
+bool Worker::in_zone(NodeId leaf) const {
+    const std::int32_t owner = tree_.node(leaf).owner.load(std::memory_order_relaxed);
+    return owner == tag_ ||
+           (owner == shared_owner && std::find(zone_->begin(), zone_->end(), leaf) != zone_->end());
 }
 
 void Worker::count(mesh::TriangleId t, const geometry::Circle& c) {
@@ -437,7 +441,7 @@ bool Worker::refine_window(const Node& n, LeafState& state) {
 }
 
 // The window's levels, in budget_slice entries at a time: once the run has
-// made split_budget triangles, the leaf splits as soon as it may
+// made its round's split budget of triangles, the leaf splits as soon as it may
 // (may_split_early), leaving the rest of its levels to its children (see
 // split_budget).  split_now says whether it stopped for that.  False when a
 // limit stopped refinement.
@@ -449,7 +453,7 @@ bool Worker::refine_own_levels(const Node& n, LeafState& state, int last_level,
         if (!refiner_.refine_levels(state.work, last_level, last_size_level, &takes_left))
             return false;
         if (takes_left != 0) return true;  // the window is done
-        if (report.triangles_created - run_start_ >= split_budget && may_split_early(n, state)) {
+        if (report.triangles_created - run_start_ >= split_budget_ && may_split_early(n, state)) {
             split_now = true;
             return true;
         }
@@ -521,8 +525,10 @@ void Worker::sweep_deferred(LeafState& state) {
         if (list.worth_sweeping()) list.sweep(liveness(), deferred_blocks_);
 }
 
-bool Worker::run(NodeId leaf, std::int32_t tag, const std::vector<NodeId>& balance) {
+bool Worker::run(NodeId leaf, std::int32_t tag, const std::vector<NodeId>& zone,
+                 const std::vector<NodeId>& balance) {
     Stopwatch clock;
+    zone_ = &zone;
     run_start_ = report.triangles_created;
     current_ = leaf;
     current_targets_ = deferral_targets(leaf);
@@ -542,6 +548,7 @@ bool Worker::run(NodeId leaf, std::int32_t tag, const std::vector<NodeId>& balan
     split_balance_candidates(balance);
     current_ = no_node;
     tag_ = 0;
+    zone_ = &no_zone_;
     times.managing += clock.lap();
     return split_now;
 }

@@ -12,6 +12,7 @@
 // triangle-slot allocators, and counts of internal nodes (relation (9)
 // exceptions, quadtree.hpp).
 
+#include <algorithm>
 #include <cstdint>
 #include <deque>
 #include <vector>
@@ -64,21 +65,34 @@ struct MasterInfo {
 };
 
 // Splitting where the work is (Worker::refine_own_levels).  A run that has
-// made split_budget triangles splits its leaf as soon as the work left lies
-// 2 + early_split_granularity σ levels below it, instead of refining all
-// its own levels (1 + g) first: where the mesh is densest, the leaves go a
-// level deeper than the granularity alone would take them, so that fewer
-// runs make much more than the budget and more runs share a round;
-// elsewhere a leaf's run never reaches the budget and the tree stays as
-// coarse as g makes it.  Counted in triangles created, so that the rounds
-// stay the same on any number of threads.  At -g5 a full run makes about
-// 60,000 triangles.  Smaller budgets give more parallelism but smaller
-// leaves, which cost two threads more than it gives them: 10,000 took
-// work / span to 38 on the graded pipe and the square, but -j2 1.16 times
-// as long, 30,000 to 17 and 16 for 1.03-1.06; 40,000 gives 15.4 and 14.0
-// for 1.02 (docs/performance.md).
+// made its round's split budget of triangles splits its leaf as soon as the
+// work left lies 2 + early_split_granularity σ levels below it, instead of
+// refining all its own levels (1 + g) first: where the mesh is densest, the
+// leaves go a level deeper than the granularity alone would take them, so
+// that fewer runs make much more than the budget and more runs share a
+// round; elsewhere a leaf's run never reaches the budget and the tree stays
+// as coarse as g makes it.  Counted in triangles created, so that the
+// rounds stay the same on any number of threads.  At -g5 a full run makes
+// about 60,000 triangles.
+//
+// The budget of a round is the work of the round before (its runs'
+// triangles) over budget_share, within [least_split_budget, split_budget]:
+// a round waits for its largest run, so a run above its round's work / 32
+// keeps the rounds below work / span 32.  Where many leaves share the
+// rounds (most of the work) that is split_budget; while the tree is still
+// coarse and few leaves have work, and at the end, the runs are cut to
+// what the rounds' work allows.  Smaller budgets throughout cost two
+// threads more than they give: 10,000 for every round took work / span to
+// 38 on the graded pipe and the square, but -j2 1.16 times as long
+// (smaller leaves: their work is handed to children that run later, out of
+// the cache), and grew the meshes by up to 0.6% (docs/performance.md).
 inline constexpr std::uint64_t split_budget = 40000;
+inline constexpr std::uint64_t least_split_budget = 10000;
+inline constexpr std::uint64_t budget_share = 32;
 inline constexpr int early_split_granularity = 3;
+constexpr std::uint64_t round_split_budget(std::uint64_t work_of_round_before) {
+    return std::clamp(work_of_round_before / budget_share, least_split_budget, split_budget);
+}
 // Entries a run takes between two looks at its budget.
 inline constexpr std::uint64_t budget_slice = 256;
 
@@ -131,12 +145,17 @@ public:
 
     // Counts every live triangle (single-threaded, before refinement starts).
     void count_all();
-    // Refines leaf `leaf`, whose zone the master holds for this run under
-    // `tag` (Node::owner): Fig. 4 lines 1-12, routing of handed-off work,
-    // and the split (line 13).  Returns whether the leaf split.  Then splits
-    // those of `balance` (leaves of the zone, Scheduler::take_balance_candidates)
-    // that are idle and whose count is 0, and lists them in `balanced`.
-    bool run(NodeId leaf, std::int32_t tag, const std::vector<NodeId>& balance = {});
+    // Refines leaf `leaf`, whose zone (`zone`: its leaves) the master holds
+    // for this run under `tag` (Node::owner of the zone's leaves that no
+    // other zone of the round holds): Fig. 4 lines 1-12, routing of
+    // handed-off work, and the split (line 13).  Returns whether the leaf
+    // split.  Then splits those of `balance` (leaves of the zone,
+    // Scheduler::take_balance_candidates) that are idle and whose count is
+    // 0, and lists them in `balanced`.
+    bool run(NodeId leaf, std::int32_t tag, const std::vector<NodeId>& zone,
+             const std::vector<NodeId>& balance = {});
+    // The round's (round_split_budget), set before its runs.
+    void set_split_budget(std::uint64_t triangles) { split_budget_ = triangles; }
 
     void tagged_triangles_gone(std::span<const mesh::TaggedTriangle> gone) override;
     void triangle_created(mesh::TriangleId t, std::uint32_t generation,
@@ -295,6 +314,10 @@ private:
     DeferralTargets current_targets_{};  // of current_, and its state
     LeafState* current_state_ = nullptr;
     std::int32_t tag_ = 0;  // the zone's Node::owner while a run goes on
+    // The zone's leaves while a run goes on (checked mode's in_zone).
+    const std::vector<NodeId>* zone_ = &no_zone_;
+    static inline const std::vector<NodeId> no_zone_;
+    bool in_zone(NodeId leaf) const;
     // Cells found lately: consecutive triangles mostly share cells, and a
     // cell's node never changes (nodes are never freed).
     struct CachedCell {
@@ -303,8 +326,9 @@ private:
     };
     CachedCell cache_[256];
     refine::PlacementScratch scratch_;
-    // report.triangles_created when the current run began (split_budget).
+    // report.triangles_created when the current run began (split_budget_).
     std::uint64_t run_start_ = 0;
+    std::uint64_t split_budget_ = split_budget;
 };
 
 }  // namespace gpdr::parallel

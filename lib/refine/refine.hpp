@@ -56,7 +56,7 @@
 // InsertBuffer and all scratch); the settings, QualityTest and strategy are
 // shared read-only.  No globals: several threads may each run a LeafRefiner
 // on different leaves of the same mesh (the parallel layer guarantees that
-// their buffer zones are disjoint).  The subsegment side table is shared:
+// their cavities' neighbourhoods are disjoint).  The subsegment side table is shared:
 // it is split into shards, each with its own lock (mesh/subsegments.hpp).
 
 #include <array>

@@ -14,6 +14,7 @@
 
 #include "parallel/parallel_support.hpp"
 #include "parallel/refine_parallel.hpp"
+#include "parallel/worker.hpp"
 #include "refine/refine_support.hpp"
 
 namespace gpdr::parallel::testing {
@@ -104,6 +105,15 @@ TEST_CASE("idle leaves beside the leaves refined split too, and every invariant 
         CHECK(report.balance_splits > 0);
         CHECK(report.balance_splits < report.splits);
     }
+}
+
+TEST_CASE("a round's split budget is the round before's work over 32, within its limits",
+          "[parallel]") {
+    CHECK(round_split_budget(0) == least_split_budget);
+    CHECK(round_split_budget(32 * least_split_budget - 1) == least_split_budget);
+    CHECK(round_split_budget(640000) == 20000);
+    CHECK(round_split_budget(32 * split_budget) == split_budget);
+    CHECK(round_split_budget(std::uint64_t{1} << 40) == split_budget);
 }
 
 TEST_CASE("the Steiner limit stops every worker with a valid mesh", "[parallel]") {

@@ -112,7 +112,7 @@ TEST_CASE("the recorded rounds hold each round's leaves, zones and work", "[para
 
     REQUIRE(report.rounds.size() > 2);
     REQUIRE(report.record.size() == report.rounds.size());
-    std::uint64_t work = 0, triangles_before = 0;
+    std::uint64_t work = 0, triangles_before = 0, shared = 0;
     for (std::size_t r = 0; r < report.record.size(); ++r) {
         INFO("round " << r);
         const RecordedRound& round = report.record[r];
@@ -130,23 +130,32 @@ TEST_CASE("the recorded rounds hold each round's leaves, zones and work", "[para
         if (r == 0) CHECK(triangles == start);
         CHECK(triangles >= triangles_before);
         triangles_before = triangles;
-        // Each zone holds its leaf; the round's zones share no leaf.
-        std::vector<int> zone_of(round.leaves.size(), -1);
+        // Each zone holds its leaf, and no other leaf of the round (zones
+        // may share the leaves between two of the round's).
+        std::vector<int> run_of(round.leaves.size(), -1);
+        for (std::size_t i = 0; i < round.runs.size(); ++i) {
+            REQUIRE(round.runs[i].leaf < round.leaves.size());
+            CHECK(run_of[round.runs[i].leaf] == -1);
+            run_of[round.runs[i].leaf] = static_cast<int>(i);
+        }
+        std::vector<int> zones_of(round.leaves.size(), 0);
         for (std::size_t i = 0; i < round.runs.size(); ++i) {
             const RecordedRun& run = round.runs[i];
             CHECK(run.work == report.rounds[r][i]);
             work += run.work;
-            REQUIRE(run.leaf < round.leaves.size());
             CHECK(std::find(run.zone.begin(), run.zone.end(), run.leaf) != run.zone.end());
             for (const std::uint32_t z : run.zone) {
                 REQUIRE(z < round.leaves.size());
-                CHECK(zone_of[z] == -1);
-                zone_of[z] = static_cast<int>(i);
+                CHECK((run_of[z] == -1 || z == run.leaf));
+                if (++zones_of[z] == 2) ++shared;
             }
         }
     }
     CHECK(triangles_before <= m.count_triangles());
     CHECK(work == report.refine.triangles_created);
+    // Leaves between two of a round's, in both their zones, are the rule's
+    // gain over disjoint zones (scheduler.hpp).
+    CHECK(shared > 0);
 
     const double parallelism = schedule_shape(report.rounds).parallelism();
     for (const unsigned ranks : {1u, 4u, 16u, 64u}) {

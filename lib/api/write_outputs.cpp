@@ -109,8 +109,6 @@ struct OutputContext {
     bool want_poly;                  // -p (or -c on a point set), not -P
 };
 
-// One row of the output table: when the switches ask for the file, where it
-// goes, and how it is written.
 // Which files the switches ask for: the options, and whether an output
 // .poly is wanted (-p, or -c on a point set, and not -P).
 struct Wants {
@@ -118,6 +116,8 @@ struct Wants {
     bool want_poly;
 };
 
+// One row of the output table: when the switches ask for the file, where it
+// goes, and how it is written.
 struct OutputFile {
     bool (*wanted)(const Wants&);
     std::string FileNames::*path;

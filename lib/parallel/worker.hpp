@@ -85,7 +85,8 @@ struct MasterInfo {
 // threads more than they give: 10,000 for every round took work / span to
 // 38 on the graded pipe and the square, but -j2 1.16 times as long
 // (smaller leaves: their work is handed to children that run later, out of
-// the cache), and grew the meshes by up to 0.6% (docs/performance.md).
+// the cache).  Early splits also grow some uniform meshes a little: this
+// rule up to +0.6% on the samples (docs/performance.md).
 inline constexpr std::uint64_t split_budget = 40000;
 inline constexpr std::uint64_t least_split_budget = 10000;
 inline constexpr std::uint64_t budget_share = 32;

@@ -35,7 +35,9 @@ fi
 build_dir=${BUILD_DIR:-build}
 jobs=${JOBS:-$(nproc)}
 if [ ! -f "$build_dir/CMakeCache.txt" ]; then
-  cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DGPDR_WERROR=ON "$@" >/dev/null
+  # For this machine's processor (GPDR_NATIVE): what this builds runs here.
+  cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DGPDR_WERROR=ON -DGPDR_NATIVE=ON "$@" \
+    >/dev/null
 elif [ $# -gt 0 ]; then
   cmake "$build_dir" "$@" >/dev/null
 fi

@@ -48,8 +48,16 @@ public:
     // Raw bytes: the binary parts of a file, or a piece of text formatted
     // elsewhere (in pieces of at most a few MiB).  What is buffered goes
     // out first when the piece would take the buffer past its threshold, so
-    // that the buffer never grows beyond the size it was reserved at.
+    // that the buffer never grows beyond the size it was reserved at.  A
+    // large piece goes to the stream as it is, after what is buffered: a
+    // copy through the buffer cost as much as the write's own copy.
     void append(const void* data, std::size_t size) {
+        if (size >= direct_size) {
+            flush();
+            write(data, size);
+            start_writeback();
+            return;
+        }
         if (buffer_.size() + size > flush_threshold) {
             flush();
             start_writeback();
@@ -71,10 +79,14 @@ public:
 
 private:
     static constexpr std::size_t flush_threshold = std::size_t{1} << 22;  // 4 MiB
+    // Pieces this large are not copied into the buffer (append).
+    static constexpr std::size_t direct_size = std::size_t{1} << 16;  // 64 KiB
     // Bytes written between two requests to start writing them to the disk.
     static constexpr std::size_t writeback_step = std::size_t{1} << 24;  // 16 MiB
 
     void flush();
+    // Hands `size` bytes to the stream.
+    void write(const void* data, std::size_t size);
     void start_writeback();
     [[noreturn]] void fail(int err, std::string_view doing);
 

@@ -79,10 +79,13 @@ void OutputTransaction::File::fail(int err, std::string_view doing) {
 
 void OutputTransaction::File::flush() {
     if (buffer_.size() == 0) return;
-    if (std::fwrite(buffer_.data(), 1, buffer_.size(), stream_) != buffer_.size())
-        fail(errno, "cannot write");
-    written_ += buffer_.size();
+    write(buffer_.data(), buffer_.size());
     buffer_.clear();
+}
+
+void OutputTransaction::File::write(const void* data, std::size_t size) {
+    if (std::fwrite(data, 1, size, stream_) != size) fail(errno, "cannot write");
+    written_ += size;
 }
 
 // The disk starts on what is written while the rest is formatted, instead

@@ -119,20 +119,29 @@ public:
 
     // ⌊log_√2(x)⌋ for finite x > 0: 2 e + (m >= √2) where x = m 2^e,
     // 1 <= m < 2 (Triangle's bins); 0 and denormals give edge_bin(DBL_MIN)
-    // or below, infinity and NaN give the top bin.
+    // or below, infinity and NaN give the top bin.  Read off x's bits: e is
+    // its biased exponent less the bias, and m >= √2 (the double nearest
+    // it) exactly when x's 52 fraction bits are at least √2's, which a
+    // library call for each (ilogb, scalbn) cost on every poor triangle.
     static int edge_bin(double x) {
         if (!(x >= 0x1p-1022)) return x >= 0 ? 2 * -1022 : 2 * 1024;
         if (!(x <= 0x1.fffffffffffffp1023)) return 2 * 1024;
-        const int e = std::ilogb(x);
-        return 2 * e + (std::scalbn(x, -e) >= 1.4142135623730951 ? 1 : 0);
+        constexpr std::uint64_t fraction = (std::uint64_t{1} << 52) - 1;
+        constexpr std::uint64_t sqrt2_fraction =
+            std::bit_cast<std::uint64_t>(1.4142135623730951) & fraction;
+        const auto bits = std::bit_cast<std::uint64_t>(x);
+        const int e = static_cast<int>(bits >> 52) - 1023;  // x is positive and normal
+        return 2 * e + ((bits & fraction) >= sqrt2_fraction ? 1 : 0);
     }
 
     double side() const { return side_; }
     // σ = ⌊log2(ℓ / r)⌋ from r², clamped (see above).
     int sigma(double radius_squared) const {
         const double ratio = side_squared_ / radius_squared;
-        if (!(ratio >= 1.0)) return 0;         // r >= ℓ, or not a number
-        const int s = std::ilogb(ratio) >> 1;  // ⌊log2(ℓ²/r²)⌋ / 2, floored
+        if (!(ratio >= 1.0)) return 0;  // r >= ℓ, or not a number
+        // ⌊log2(ℓ²/r²)⌋ / 2, floored: ratio is normal (or infinite, whose
+        // exponent field clamps as ilogb's INT_MAX would).
+        const int s = (static_cast<int>(std::bit_cast<std::uint64_t>(ratio) >> 52) - 1023) >> 1;
         return s < bucket_count - 1 ? s : bucket_count - 2;
     }
     // The slot of a poor triangle with circumradius² radius_squared and
@@ -252,6 +261,17 @@ public:
         if (at.bin > size_bin) note_size_edge_head(at.level, l);
     }
     std::size_t poor_entries() const { return poor_entries_; }
+    // The entry pop_poor would take next from slot `at` if nothing is
+    // pushed meanwhile, or null: what the refiner will most likely read
+    // next, worth asking the memory for while it inserts the one it took.
+    const QueuedTriangle* next_in(PoorSlot at) const {
+        const Level& l = *levels_[static_cast<std::size_t>(at.level)];
+        const Bin& b = at.bin <= size_bin
+                           ? l.bins[static_cast<std::size_t>(at.bin)]
+                           : (*l.size_edges)[static_cast<std::size_t>(at.bin - size_edges_base)];
+        if (b.empty()) return nullptr;
+        return at.bin == size_bin ? &b.items.back() : &b.items[b.head];
+    }
 
     // The slot to take first among levels lowest_level() .. last_level, the
     // size bins and size edge bins only up to last_size_level: a flat

@@ -308,9 +308,20 @@ bool LeafRefiner::refine_levels(Leaf& leaf, int last_level, int last_size_level,
         }
         QueuedTriangle q;
         leaf.pop_poor(at, q);
+        // The next entry's record is a cache miss more often than not
+        // (queued long ago): asked for now, it arrives while q is refined.
+        // (Asking for the one after it too, or reading the next one's
+        // links to ask for its neighbours, made refinement slower.)
+        if (const QueuedTriangle* next = leaf.next_in(at))
+            __builtin_prefetch(&mesh_.triangle(next->id));
         const mesh::Triangle& r = mesh_.triangle(q.id);
         if (r.load_generation() != q.generation || !r.live())
             continue;  // stale (generation first: see Triangle)
+        // Its neighbours are the first records the walk to the Steiner
+        // point and the cavity search read: asked for while the point is
+        // chosen.  (A hull edge's none names the table's last slot, which
+        // no id reaches: a prefetch of it is harmless.)
+        for (const mesh::EdgeRef e : r.n) __builtin_prefetch(&mesh_.triangle(e.triangle()));
         if (report_.stopped != RefineReport::Stop::none) {
             leaf.push_poor(q, at);
             return false;

@@ -2,7 +2,9 @@
 // shortest edges first, first-in-first-out within a bin, size-only
 // triangles last and newest first; quadtree leaves order by σ level first.
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <random>
 #include <vector>
@@ -81,6 +83,44 @@ TEST_CASE("edge_bin is the floor of the logarithm to base sqrt 2", "[refine][ord
     }
     CHECK(Leaf::edge_bin(0.0) <= Leaf::edge_bin(0x1p-1022));
     CHECK(Leaf::edge_bin(INFINITY) >= Leaf::edge_bin(0x1p1023));
+}
+
+TEST_CASE("edge_bin reads the bins off the bits as ilogb and scalbn define them",
+          "[refine][order]") {
+    // The library's definition: 2 e + (m >= √2), x = m 2^e, 1 <= m < 2.
+    const auto reference = [](double x) {
+        const int e = std::ilogb(x);
+        return 2 * e + (std::scalbn(x, -e) >= 1.4142135623730951 ? 1 : 0);
+    };
+    std::mt19937_64 random(11);
+    std::uniform_int_distribution<std::uint64_t> bits(std::bit_cast<std::uint64_t>(0x1p-1022),
+                                                      std::bit_cast<std::uint64_t>(0x1p1023));
+    for (int trial = 0; trial < 100000; ++trial) {
+        const double x = std::bit_cast<double>(bits(random));
+        REQUIRE(Leaf::edge_bin(x) == reference(x));
+    }
+    // Either side of √2 and of 1 at every exponent.
+    for (int e = -1022; e <= 1023; ++e) {
+        for (const double m : {1.0, 1.4142135623730951}) {
+            const double x = std::ldexp(m, e);
+            for (const double y : {std::nextafter(x, 0.0), x, std::nextafter(x, INFINITY)}) {
+                if (!(y >= 0x1p-1022) || !std::isfinite(y)) continue;
+                REQUIRE(Leaf::edge_bin(y) == reference(y));
+            }
+        }
+    }
+    // σ the same way: ⌊log2(ℓ²/r²)⌋ / 2, clamped to the last level but one.
+    const Leaf leaf(3.0);
+    std::uniform_real_distribution<double> exponent(-200.0, 10.0);
+    for (int trial = 0; trial < 100000; ++trial) {
+        const double r2 = 9.0 * std::exp2(exponent(random));
+        const double ratio = 9.0 / r2;
+        const int want =
+            !(ratio >= 1.0) ? 0 : std::min(std::ilogb(ratio) >> 1, Leaf::bucket_count - 2);
+        REQUIRE(leaf.sigma(r2) == want);
+    }
+    CHECK(leaf.sigma(0.0) == Leaf::bucket_count - 2);
+    CHECK(leaf.sigma(NAN) == 0);
 }
 
 TEST_CASE("a flat leaf gives the shortest edges' bin first, first in first out within a bin",

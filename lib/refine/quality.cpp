@@ -41,13 +41,6 @@ QualityTest::QualityTest(const QualityCriteria& criteria, SegmentEnds segments)
     area_test_ = criteria_.max_area > 0 || regional || criteria_.area_field != nullptr;
 }
 
-TriangleMeasures QualityTest::measure(const Point& a, const Point& b, const Point& c) {
-    const double orientation =
-        geometry::orient2d(a, b, c);  // once: the circle and the area share it
-    return {geometry::circumcircle(a, b, c, orientation), geometry::shortest_edge(a, b, c),
-            0.5 * orientation};
-}
-
 namespace {
 
 // call_user_test for corners with attributes, kept out of line so that the

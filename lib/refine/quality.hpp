@@ -85,8 +85,16 @@ public:
     double encroachment_lens() const { return lens_; }
     bool has_area_test() const { return area_test_; }
 
+    // Inline: its caller for every new triangle (LeafRefiner::classify_created)
+    // copies the circle on, and a copy loaded back from a returned record
+    // whose parts were stored one by one waits for the stores to retire.
     static TriangleMeasures measure(const geometry::Point& a, const geometry::Point& b,
-                                    const geometry::Point& c);
+                                    const geometry::Point& c) {
+        const double orientation =
+            geometry::orient2d(a, b, c);  // once: the circle and the area share it
+        return {geometry::circumcircle(a, b, c, orientation), geometry::shortest_edge(a, b, c),
+                0.5 * orientation};
+    }
 
     // Tests 1-5 on live triangle t (measures from measure()).  The angle test
     // leaves a triangle alone when a small input angle forces its angle

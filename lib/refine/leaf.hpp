@@ -119,10 +119,10 @@ public:
 
     // ⌊log_√2(x)⌋ for finite x > 0: 2 e + (m >= √2) where x = m 2^e,
     // 1 <= m < 2 (Triangle's bins); 0 and denormals give edge_bin(DBL_MIN)
-    // or below, infinity and NaN give the top bin.  Read off x's bits: e is
-    // its biased exponent less the bias, and m >= √2 (the double nearest
-    // it) exactly when x's 52 fraction bits are at least √2's, which a
-    // library call for each (ilogb, scalbn) cost on every poor triangle.
+    // or below, infinity and NaN give the top bin.  Read off x's bits, not
+    // through ilogb and scalbn (a library call each, for every poor
+    // triangle): e is its biased exponent less the bias, and m >= √2 (the
+    // double nearest it) exactly when x's 52 fraction bits are at least √2's.
     static int edge_bin(double x) {
         if (!(x >= 0x1p-1022)) return x >= 0 ? 2 * -1022 : 2 * 1024;
         if (!(x <= 0x1.fffffffffffffp1023)) return 2 * 1024;

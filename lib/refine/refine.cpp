@@ -310,8 +310,8 @@ bool LeafRefiner::refine_levels(Leaf& leaf, int last_level, int last_size_level,
         leaf.pop_poor(at, q);
         // The next entry's record is a cache miss more often than not
         // (queued long ago): asked for now, it arrives while q is refined.
-        // (Asking for the one after it too, or reading the next one's
-        // links to ask for its neighbours, made refinement slower.)
+        // (Asking for the one after it too, or for the next one's
+        // neighbours, makes refinement slower: docs/performance.md.)
         if (const QueuedTriangle* next = leaf.next_in(at))
             __builtin_prefetch(&mesh_.triangle(next->id));
         const mesh::Triangle& r = mesh_.triangle(q.id);

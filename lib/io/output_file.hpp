@@ -50,7 +50,7 @@ public:
     // out first when the piece would take the buffer past its threshold, so
     // that the buffer never grows beyond the size it was reserved at.  A
     // large piece goes to the stream as it is, after what is buffered: a
-    // copy through the buffer cost as much as the write's own copy.
+    // copy through the buffer costs as much as the write's own copy.
     void append(const void* data, std::size_t size) {
         if (size >= direct_size) {
             flush();

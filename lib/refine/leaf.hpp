@@ -49,6 +49,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "geometry/point.hpp"
@@ -265,10 +266,7 @@ public:
     // pushed meanwhile, or null: what the refiner will most likely read
     // next, worth asking the memory for while it inserts the one it took.
     const QueuedTriangle* next_in(PoorSlot at) const {
-        const Level& l = *levels_[static_cast<std::size_t>(at.level)];
-        const Bin& b = at.bin <= size_bin
-                           ? l.bins[static_cast<std::size_t>(at.bin)]
-                           : (*l.size_edges)[static_cast<std::size_t>(at.bin - size_edges_base)];
+        const Bin& b = levels_[static_cast<std::size_t>(at.level)]->bin(at.bin);
         if (b.empty()) return nullptr;
         return at.bin == size_bin ? &b.items.back() : &b.items[b.head];
     }
@@ -450,10 +448,11 @@ private:
         int lowest_size_edge = bin_count;  // of *size_edges; bin_count: none
         std::size_t entries = 0;
         // PoorSlot::bin's bin.
-        Bin& bin(int b) {
+        const Bin& bin(int b) const {
             if (b <= size_bin) return bins[static_cast<std::size_t>(b)];
             return (*size_edges)[static_cast<std::size_t>(b - size_edges_base)];
         }
+        Bin& bin(int b) { return const_cast<Bin&>(std::as_const(*this).bin(b)); }
     };
     // The bin at `at`, made if missing; entries pushed straight into it are
     // then counted by note_pushed.
